@@ -1,0 +1,43 @@
+//! clap command definitions; one file per command family.
+
+use std::process::ExitCode;
+
+use clap::{CommandFactory, Parser, Subcommand};
+
+mod completions;
+mod hull;
+
+/// 2D+t ship-slamming design tool: strip theory, SPH water entry, analytic cross-checks, design reports.
+#[derive(Debug, Parser)]
+#[command(name = "slamtool", version, about, long_about = None, propagate_version = true)]
+pub struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Hull definition: hydrostatics, form coefficients, sections.
+    #[command(subcommand)]
+    Hull(hull::HullCommand),
+    /// Print a shell completion script.
+    Completions(completions::CompletionsArgs),
+    /// Print the manual page (roff) on stdout.
+    Man,
+}
+
+pub fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Hull(c) => hull::run(c),
+        Command::Completions(a) => completions::run(a, &mut Cli::command()),
+        Command::Man => completions::man(&Cli::command()),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}

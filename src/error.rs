@@ -1,0 +1,84 @@
+//! Error types. Every problem with user input is an [`InputError`] that names the file, the line and the
+//! column (1-based) and says what is wrong; the CLI prints it as `file:line:column: message`.
+
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+/// A problem in an input file, located to the line and column.
+#[derive(Debug, Clone, PartialEq)]
+pub struct InputError {
+    /// The file the problem is in.
+    pub file: PathBuf,
+    /// 1-based line number.
+    pub line: usize,
+    /// 1-based column number (in characters).
+    pub column: usize,
+    /// What is wrong, in words a user can act on.
+    pub message: String,
+}
+
+impl fmt::Display for InputError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{}:{}:{}: {}",
+            self.file.display(),
+            self.line,
+            self.column,
+            self.message
+        )
+    }
+}
+
+impl std::error::Error for InputError {}
+
+/// Every error the library returns.
+#[derive(Debug)]
+pub enum Error {
+    /// Bad input, located in its file.
+    Input(InputError),
+    /// An operating-system error on a file.
+    Io { path: PathBuf, source: std::io::Error },
+    /// A numerical method failed (no convergence, singular system, ...).
+    Numerical(String),
+    /// A request that is well-formed but cannot be carried out with these inputs.
+    Invalid(String),
+}
+
+impl Error {
+    pub fn io(path: &Path, source: std::io::Error) -> Self {
+        Error::Io {
+            path: path.to_path_buf(),
+            source,
+        }
+    }
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Error::Input(e) => write!(f, "{e}"),
+            Error::Io { path, source } => write!(f, "{}: {}", path.display(), source),
+            Error::Numerical(m) => write!(f, "numerical failure: {m}"),
+            Error::Invalid(m) => write!(f, "{m}"),
+        }
+    }
+}
+
+impl std::error::Error for Error {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            Error::Io { source, .. } => Some(source),
+            Error::Input(e) => Some(e),
+            _ => None,
+        }
+    }
+}
+
+impl From<InputError> for Error {
+    fn from(e: InputError) -> Self {
+        Error::Input(e)
+    }
+}
+
+pub type Result<T, E = Error> = std::result::Result<T, E>;

@@ -1,0 +1,1 @@
+//! Hull definition (in progress).

@@ -1,0 +1,1 @@
+//! Sea states (in progress).
