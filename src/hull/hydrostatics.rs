@@ -11,13 +11,15 @@
 //! * C_B = ∇/(L B T), C_M = A_M/(B T), C_P = ∇/(A_M L), C_WP = A_wp/(L B), with L = Lpp, B the largest
 //!   waterline breadth, T the mean draft and A_M the midship (x = 0) sectional area.
 //!
-//! The integrals over x are exact integrals of the PCHIP interpolant through the station values (the same
-//! shape-preserving interpolation the sections use).
+//! A(x), A z_c(x) and b(x) are interpolated between stations by PCHIP (the same shape-preserving
+//! interpolation the sections use) and the integrals above are evaluated exactly for those interpolants by
+//! Gauss-Legendre quadrature on each station interval.
 
 use serde::Serialize;
 
 use super::{Hull, LoadingCondition};
 use crate::numerics::Pchip;
+use crate::numerics::quadrature::gauss_legendre;
 
 /// Sectional area at one station.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -83,37 +85,36 @@ impl Hydrostatics {
         let lpp = hull.lpp;
         let n = hull.stations.len();
         let mut xs = Vec::with_capacity(n);
-        let (mut a, mut ax, mut az, mut b2, mut b2x, mut b2xx, mut b3) =
-            (vec![], vec![], vec![], vec![], vec![], vec![], vec![]);
+        let (mut a, mut az, mut b) = (vec![], vec![], vec![]);
         let mut sac = Vec::with_capacity(n);
         for st in &hull.stations {
             let t = loading.draft_at(st.x, lpp);
             let p = st.section.properties(t);
             xs.push(st.x);
             a.push(p.area);
-            ax.push(p.area * st.x);
             az.push(p.area * p.centroid_z);
-            let b = p.half_breadth;
-            b2.push(2.0 * b);
-            b2x.push(2.0 * b * st.x);
-            b2xx.push(2.0 * b * st.x * st.x);
-            b3.push(2.0 / 3.0 * b * b * b);
+            b.push(p.half_breadth);
             sac.push(SectionalArea {
                 x_m: st.x,
                 area_m2: p.area,
                 draft_m: t,
-                half_breadth_m: b,
+                half_breadth_m: p.half_breadth,
             });
         }
-        let int = |f: &[f64]| Pchip::new(&xs, f).integral();
-        let volume = int(&a);
+        let (a, az, b) = (
+            Pchip::new(&xs, &a),
+            Pchip::new(&xs, &az),
+            Pchip::new(&xs, &b),
+        );
+        let int = |f: &dyn Fn(f64) -> f64| integrate(&xs, f);
+        let volume = int(&|x| a.eval(x));
         let safe = |num: f64, den: f64| if den > 0.0 { num / den } else { 0.0 };
-        let lcb = safe(int(&ax), volume);
-        let kb = safe(int(&az), volume);
-        let awp = int(&b2);
-        let lcf = safe(int(&b2x), awp);
-        let i_l = int(&b2xx) - awp * lcf * lcf;
-        let i_t = int(&b3);
+        let lcb = safe(int(&|x| x * a.eval(x)), volume);
+        let kb = safe(int(&|x| az.eval(x)), volume);
+        let awp = int(&|x| 2.0 * b.eval(x));
+        let lcf = safe(int(&|x| 2.0 * x * b.eval(x)), awp);
+        let i_l = int(&|x| 2.0 * b.eval(x) * (x - lcf).powi(2));
+        let i_t = int(&|x| 2.0 / 3.0 * b.eval(x).powi(3));
         let bm_t = safe(i_t, volume);
         let bm_l = safe(i_l, volume);
         let t_mean = loading.mean_draft();
@@ -161,4 +162,20 @@ impl Hydrostatics {
             mass_buoyancy_mismatch: (mass - self.displacement_kg) / self.displacement_kg,
         }
     }
+}
+
+/// ∫ f dx over the station range, Gauss-Legendre with 6 points per station interval: exact for the
+/// polynomial integrands above (PCHIP cubics times x², and cubed half-breadths, degree ≤ 9).
+fn integrate(xs: &[f64], f: &dyn Fn(f64) -> f64) -> f64 {
+    let (nodes, weights) = gauss_legendre(6);
+    xs.windows(2)
+        .map(|w| {
+            let (mid, half) = (0.5 * (w[0] + w[1]), 0.5 * (w[1] - w[0]));
+            nodes
+                .iter()
+                .zip(&weights)
+                .map(|(t, wt)| wt * half * f(mid + half * t))
+                .sum::<f64>()
+        })
+        .sum()
 }

@@ -6,7 +6,9 @@ use toml::Spanned;
 
 use super::schema::{HullFile, LoadingRaw, SensorRaw, StationRaw};
 use super::validate::check_section;
-use super::{Hull, LoadingCondition, SectionInterpolator, Section, Sensor, Station, offsets_csv, station_x};
+use super::{
+    Hull, LoadingCondition, Section, SectionInterpolator, Sensor, Station, offsets_csv, station_x,
+};
 use crate::error::{Error, InputError, Result};
 use crate::input::{SourceText, finite, in_range, positive};
 
