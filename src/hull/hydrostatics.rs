@@ -11,14 +11,16 @@
 //! * C_B = ∇/(L B T), C_M = A_M/(B T), C_P = ∇/(A_M L), C_WP = A_wp/(L B), with L = Lpp, B the largest
 //!   waterline breadth, T the mean draft and A_M the midship (x = 0) sectional area.
 //!
-//! A(x), A z_c(x) and b(x) are interpolated between stations by PCHIP (the same shape-preserving
-//! interpolation the sections use) and the integrals above are evaluated exactly for those interpolants by
-//! Gauss-Legendre quadrature on each station interval.
+//! The integrals over x use Gauss-Legendre quadrature (6 points per station interval) on the sections
+//! interpolated between stations (shape-preserving PCHIP, see `interpolate`), each cut by its own local
+//! waterline, so trim is exact for any station spacing.
 
 use serde::Serialize;
 
-use super::{Hull, LoadingCondition};
-use crate::numerics::Pchip;
+use super::{Hull, LoadingCondition, SectionProperties};
+
+/// Gauss-Legendre points per station interval.
+const GAUSS_POINTS: usize = 6;
 use crate::numerics::quadrature::gauss_legendre;
 
 /// Sectional area at one station.
@@ -84,37 +86,46 @@ impl Hydrostatics {
     pub fn compute(hull: &Hull, loading: &LoadingCondition) -> Self {
         let lpp = hull.lpp;
         let n = hull.stations.len();
-        let mut xs = Vec::with_capacity(n);
-        let (mut a, mut az, mut b) = (vec![], vec![], vec![]);
-        let mut sac = Vec::with_capacity(n);
-        for st in &hull.stations {
-            let t = loading.draft_at(st.x, lpp);
-            let p = st.section.properties(t);
-            xs.push(st.x);
-            a.push(p.area);
-            az.push(p.area * p.centroid_z);
-            b.push(p.half_breadth);
-            sac.push(SectionalArea {
-                x_m: st.x,
-                area_m2: p.area,
-                draft_m: t,
-                half_breadth_m: p.half_breadth,
-            });
+        let xs: Vec<f64> = hull.stations.iter().map(|s| s.x).collect();
+        let sac: Vec<SectionalArea> = hull
+            .stations
+            .iter()
+            .map(|st| {
+                let t = loading.draft_at(st.x, lpp);
+                let p = st.section.properties(t);
+                SectionalArea {
+                    x_m: st.x,
+                    area_m2: p.area,
+                    draft_m: t,
+                    half_breadth_m: p.half_breadth,
+                }
+            })
+            .collect();
+        // Section properties at every quadrature node, each under its own local waterline.
+        let (nodes, weights) = gauss_legendre(GAUSS_POINTS);
+        let mut samples = Vec::with_capacity((n - 1) * GAUSS_POINTS);
+        for w in xs.windows(2) {
+            let (mid, half) = (0.5 * (w[0] + w[1]), 0.5 * (w[1] - w[0]));
+            for (t, wt) in nodes.iter().zip(&weights) {
+                let x = mid + half * t;
+                let p = hull
+                    .section_at(x)
+                    .expect("node lies between stations")
+                    .properties(loading.draft_at(x, lpp));
+                samples.push((x, wt * half, p));
+            }
         }
-        let (a, az, b) = (
-            Pchip::new(&xs, &a),
-            Pchip::new(&xs, &az),
-            Pchip::new(&xs, &b),
-        );
-        let int = |f: &dyn Fn(f64) -> f64| integrate(&xs, f);
-        let volume = int(&|x| a.eval(x));
+        let int = |f: &dyn Fn(f64, &SectionProperties) -> f64| -> f64 {
+            samples.iter().map(|(x, w, p)| w * f(*x, p)).sum()
+        };
+        let volume = int(&|_, p| p.area);
         let safe = |num: f64, den: f64| if den > 0.0 { num / den } else { 0.0 };
-        let lcb = safe(int(&|x| x * a.eval(x)), volume);
-        let kb = safe(int(&|x| az.eval(x)), volume);
-        let awp = int(&|x| 2.0 * b.eval(x));
-        let lcf = safe(int(&|x| 2.0 * x * b.eval(x)), awp);
-        let i_l = int(&|x| 2.0 * b.eval(x) * (x - lcf).powi(2));
-        let i_t = int(&|x| 2.0 / 3.0 * b.eval(x).powi(3));
+        let lcb = safe(int(&|x, p| x * p.area), volume);
+        let kb = safe(int(&|_, p| p.area * p.centroid_z), volume);
+        let awp = int(&|_, p| 2.0 * p.half_breadth);
+        let lcf = safe(int(&|x, p| 2.0 * x * p.half_breadth), awp);
+        let i_l = int(&|x, p| 2.0 * p.half_breadth * (x - lcf).powi(2));
+        let i_t = int(&|_, p| 2.0 / 3.0 * p.half_breadth.powi(3));
         let bm_t = safe(i_t, volume);
         let bm_l = safe(i_l, volume);
         let t_mean = loading.mean_draft();
@@ -162,20 +173,4 @@ impl Hydrostatics {
             mass_buoyancy_mismatch: (mass - self.displacement_kg) / self.displacement_kg,
         }
     }
-}
-
-/// ∫ f dx over the station range, Gauss-Legendre with 6 points per station interval: exact for the
-/// polynomial integrands above (PCHIP cubics times x², and cubed half-breadths, degree ≤ 9).
-fn integrate(xs: &[f64], f: &dyn Fn(f64) -> f64) -> f64 {
-    let (nodes, weights) = gauss_legendre(6);
-    xs.windows(2)
-        .map(|w| {
-            let (mid, half) = (0.5 * (w[0] + w[1]), 0.5 * (w[1] - w[0]));
-            nodes
-                .iter()
-                .zip(&weights)
-                .map(|(t, wt)| wt * half * f(mid + half * t))
-                .sum::<f64>()
-        })
-        .sum()
 }
