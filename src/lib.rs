@@ -28,5 +28,6 @@ pub mod input;
 pub mod numerics;
 pub mod provenance;
 pub mod sea;
+pub mod seakeeping;
 
 pub use error::{Error, InputError, Result};
