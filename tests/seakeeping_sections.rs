@@ -11,6 +11,7 @@
 //! * Energy conservation: b33 from the pressure integral equals rho g^2 A^2 / w^3 from the radiated wave.
 //! * Irregular frequency of a B x T rectangle (symmetric mode): nu1 = (pi/B) coth(pi T/B) (interior
 //!   Dirichlet eigenvalue problem, e.g. Lee, Newman & Zhu 1996).
+//!
 //! The numbers are also in data/reference/seakeeping_2d_checks.md.
 
 use slamtool::seakeeping::section::{HalfSection, SectionMethod, frank_close_fit, radiation};

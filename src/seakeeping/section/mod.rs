@@ -154,6 +154,20 @@ impl HalfSection {
             .sum::<f64>()
     }
 
+    /// Height of the centroid of the immersed area above the waterline (negative).
+    pub fn centroid_z(&self) -> f64 {
+        // first moment about z = 0 of the area between contour and waterline: int z^2/2 dy (sign: below)
+        let m: f64 = self
+            .points
+            .windows(2)
+            .map(|w| {
+                let dy = w[1][0] - w[0][0];
+                -(w[0][1] * w[0][1] + w[0][1] * w[1][1] + w[1][1] * w[1][1]) / 6.0 * dy
+            })
+            .sum();
+        2.0 * m / self.area()
+    }
+
     /// Froude-Krylov integral int e^{kz} dy over the full waterline-to-waterline contour
     /// (= -int e^{kz} n_z ds): the sectional heave force is rho g zeta_a e^{ikx} times this.
     pub fn froude_krylov(&self, k: f64) -> f64 {

@@ -1,0 +1,331 @@
+//! Salvesen, Tuck & Faltinsen (1970) strip theory: coupled heave and pitch of a ship with forward speed U
+//! in regular head waves.
+//!
+//! Frequency domain with e^{i w_e t}, w_e = w0 + w0^2 U / g (head seas), incident wave
+//! zeta = zeta_a e^{i(w_e t + k x)} (crest at midship at t = 0, travelling towards -x).
+//! Equations of motion: [-w_e^2 (M + Z) + C] eta = F, with the complex added-mass matrix
+//! Z = A - i B / w_e built from the sectional Z(x) = a33(x) - i b33(x)/w_e (STF 1970, table 1, written in
+//! complex form; superscript A marks the aftmost (transom) section, zero for a ship without a wetted transom):
+//!
+//! Z33 = int Z dx - (iU/w) Z^A
+//! Z35 = -int (x + iU/w) Z dx + (iU/w)(x_A + iU/w) Z^A
+//! Z53 = -int (x - iU/w) Z dx + (iU/w) x_A Z^A
+//! Z55 = int (x^2 + U^2/w^2) Z dx - (iU/w) x_A (x_A + iU/w) Z^A
+//!
+//! which gives STF's A33 = int a33 - U/w^2 b33^A, B33 = int b33 + U a33^A, A35 = -int x a33 - U/w^2 B33^0 + ...
+//! The Timman-Newman relations A35(U) = A53(-U), B35(U) = B53(-U) hold for ships without a transom.
+//!
+//! Restoring about the origin: C33 = rho g Awp, C35 = C53 = -rho g int x b dx,
+//! C55 = rho g int x^2 b dx + rho g V (z_B - z_G).
+//!
+//! Exciting force per unit wave amplitude: Froude-Krylov f_FK = rho g e^{ikx} int e^{kz} dy (pressure decay
+//! over the section: the Smith correction) plus diffraction f_D = w_e w0 e^{ikx} rho int psi3 n_z e^{kz} ds
+//! (STF's Haskind-type form with the 2D radiation potential psi3 at w_e):
+//!
+//! F3 = int (f_FK + f_D) dx + U/(i w_e) f_D^A,
+//! F5 = -int [x f_FK + (x + U/(i w_e)) f_D] dx - U/(i w_e) x_A f_D^A.
+//!
+//! Known limitation (Journee 1992, Wigley hull tests; physics.md): strip theory over-predicts the pitch
+//! damping at forward speed (the U^2/w^2 B33^0 term of B55 grows with speed while the measured B55 is nearly
+//! speed-independent), so pitch responses near resonance at speed are under-predicted.
+
+use nalgebra::{Complex, Matrix2, Vector2};
+use rayon::prelude::*;
+
+use super::ShipModel;
+use super::section::{self, HalfSection, Radiation, SectionMethod, frank_close_fit};
+use crate::error::{Error, Result};
+
+type C64 = Complex<f64>;
+
+/// Strip-theory settings.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct StripSettings {
+    pub method: SectionMethod,
+    pub frank: frank_close_fit::Settings,
+}
+
+/// Encounter frequency in head seas: w_e = w0 + w0^2 U / g.
+pub fn encounter_frequency(omega0: f64, speed: f64, g: f64) -> f64 {
+    omega0 + omega0 * omega0 * speed / g
+}
+
+/// Global hydrodynamic coefficients at one encounter frequency, indices 0 = heave, 1 = pitch.
+#[derive(Debug, Clone)]
+pub struct Coefficients {
+    pub omega_e: f64,
+    pub speed: f64,
+    /// Added mass matrix A (kg, kg m, kg m^2).
+    pub added_mass: [[f64; 2]; 2],
+    /// Damping matrix B.
+    pub damping: [[f64; 2]; 2],
+    /// Complex form Z = A - i B / w_e.
+    pub z: [[C64; 2]; 2],
+}
+
+/// The sectional radiation solutions of all stations at one encounter frequency.
+pub struct Strips {
+    pub omega_e: f64,
+    /// One entry per station of the model (None where the station is dry).
+    pub radiation: Vec<Option<Radiation>>,
+}
+
+/// Solve the 2D problems of all stations at encounter frequency `omega_e` (in parallel; the result is
+/// independent of the thread count since each station is solved on its own).
+pub fn strips(model: &ShipModel, omega_e: f64, settings: &StripSettings) -> Result<Strips> {
+    let radiation: Result<Vec<Option<Radiation>>> = model
+        .stations
+        .par_iter()
+        .map(|st| match &st.section {
+            None => Ok(None),
+            Some(sec) => solve_section(sec, omega_e, model, settings).map(Some),
+        })
+        .collect();
+    Ok(Strips {
+        omega_e,
+        radiation: radiation?,
+    })
+}
+
+fn solve_section(
+    sec: &HalfSection,
+    omega: f64,
+    model: &ShipModel,
+    s: &StripSettings,
+) -> Result<Radiation> {
+    match s.method {
+        SectionMethod::FrankCloseFit => {
+            frank_close_fit::radiation(sec, omega, model.g, model.rho, &s.frank)
+        }
+        SectionMethod::Lewis => section::lewis::radiation(sec, omega, model.g, model.rho),
+    }
+}
+
+/// Trapezoidal integral over the stations of f(x, station index).
+fn integrate<T>(model: &ShipModel, f: impl Fn(usize) -> T) -> T
+where
+    T: std::ops::Add<Output = T> + std::ops::Mul<f64, Output = T> + Copy + Default,
+{
+    let mut acc = T::default();
+    let st = &model.stations;
+    for i in 0..st.len().saturating_sub(1) {
+        let h = st[i + 1].x - st[i].x;
+        acc = acc + (f(i) + f(i + 1)) * (0.5 * h);
+    }
+    acc
+}
+
+/// Index of the transom station: the aftmost station, if it is wetted.
+fn transom(model: &ShipModel) -> Option<usize> {
+    model
+        .stations
+        .first()
+        .and_then(|s| s.section.as_ref().map(|_| 0))
+}
+
+/// Global added mass and damping from the sectional solutions.
+pub fn coefficients(model: &ShipModel, strips: &Strips, speed: f64) -> Coefficients {
+    let w = strips.omega_e;
+    let zx = |i: usize| {
+        strips.radiation[i]
+            .as_ref()
+            .map_or(C64::new(0.0, 0.0), |r| r.z())
+    };
+    let x = |i: usize| model.stations[i].x;
+    let iu = C64::new(0.0, speed / w);
+    let mut z33 = integrate(model, zx);
+    let mut z35 = -integrate(model, |i| (iu + x(i)) * zx(i));
+    let mut z53 = -integrate(model, |i| (-iu + x(i)) * zx(i));
+    let mut z55 = integrate(model, |i| zx(i) * (x(i) * x(i) + (speed / w).powi(2)));
+    if let Some(a) = transom(model) {
+        let (za, xa) = (zx(a), x(a));
+        z33 -= iu * za;
+        z35 += iu * (iu + xa) * za;
+        z53 += iu * xa * za;
+        z55 -= iu * xa * (iu + xa) * za;
+    }
+    let z = [[z33, z35], [z53, z55]];
+    let mut added_mass = [[0.0; 2]; 2];
+    let mut damping = [[0.0; 2]; 2];
+    for j in 0..2 {
+        for k in 0..2 {
+            added_mass[j][k] = z[j][k].re;
+            damping[j][k] = -w * z[j][k].im;
+        }
+    }
+    Coefficients {
+        omega_e: w,
+        speed,
+        added_mass,
+        damping,
+        z,
+    }
+}
+
+/// Wave exciting force and moment per unit wave amplitude in head seas.
+#[derive(Debug, Clone, Copy)]
+pub struct Excitation {
+    /// Heave force F3 (N/m), complex.
+    pub f3: C64,
+    /// Pitch moment F5 (N m/m), complex, positive bow down.
+    pub f5: C64,
+    /// Froude-Krylov parts alone.
+    pub f3_fk: C64,
+    pub f5_fk: C64,
+}
+
+/// Exciting force from the sectional solutions at the encounter frequency of `omega0`.
+pub fn excitation(model: &ShipModel, strips: &Strips, omega0: f64, speed: f64) -> Excitation {
+    let k = omega0 * omega0 / model.g;
+    let we = strips.omega_e;
+    let x = |i: usize| model.stations[i].x;
+    let wave = |i: usize| C64::new(0.0, k * x(i)).exp();
+    let fk = |i: usize| {
+        model.stations[i]
+            .section
+            .as_ref()
+            .map_or(C64::new(0.0, 0.0), |s| {
+                wave(i) * (model.rho * model.g * s.froude_krylov(k))
+            })
+    };
+    let fd = |i: usize| {
+        strips.radiation[i]
+            .as_ref()
+            .map_or(C64::new(0.0, 0.0), |r| {
+                wave(i) * r.diffraction_integral(k, model.rho) * (we * omega0)
+            })
+    };
+    let u_iw = C64::new(0.0, -speed / we); // U/(i w_e)
+    let f3_fk = integrate(model, fk);
+    let f5_fk = -integrate(model, |i| fk(i) * x(i));
+    let mut f3 = f3_fk + integrate(model, fd);
+    let mut f5 = f5_fk - integrate(model, |i| (u_iw + x(i)) * fd(i));
+    if let Some(a) = transom(model) {
+        f3 += u_iw * fd(a);
+        f5 -= u_iw * fd(a) * x(a);
+    }
+    Excitation {
+        f3,
+        f5,
+        f3_fk,
+        f5_fk,
+    }
+}
+
+/// Hydrostatic restoring matrix about the origin.
+pub fn restoring(model: &ShipModel) -> [[f64; 2]; 2] {
+    let rg = model.rho * model.g;
+    let b = |i: usize| model.stations[i].section.as_ref().map_or(0.0, |s| s.beam());
+    let x = |i: usize| model.stations[i].x;
+    let c33 = rg * integrate(model, b);
+    let c35 = -rg * integrate(model, |i| x(i) * b(i));
+    let c55 = rg * integrate(model, |i| x(i) * x(i) * b(i))
+        + rg * model.volume() * (model.z_buoyancy() - model.zg);
+    [[c33, c35], [c35, c55]]
+}
+
+/// Rigid-body mass matrix about the origin (G at (x_G, z_G), pitch radius of gyration about G).
+pub fn mass_matrix(model: &ShipModel) -> [[f64; 2]; 2] {
+    let m = model.mass;
+    [
+        [m, -m * model.xg],
+        [
+            -m * model.xg,
+            m * (model.k_yy * model.k_yy + model.xg * model.xg),
+        ],
+    ]
+}
+
+/// Response to a regular head wave of unit amplitude.
+#[derive(Debug, Clone)]
+pub struct Response {
+    pub omega0: f64,
+    pub omega_e: f64,
+    pub wave_number: f64,
+    pub speed: f64,
+    /// Heave per unit wave amplitude (complex; phase relative to the wave crest at midship).
+    pub heave: C64,
+    /// Pitch (rad) per unit wave amplitude, positive bow down.
+    pub pitch: C64,
+    pub excitation: Excitation,
+    pub coefficients: Coefficients,
+}
+
+/// Solve the coupled heave-pitch equations at wave frequency `omega0` and speed U.
+pub fn respond(
+    model: &ShipModel,
+    omega0: f64,
+    speed: f64,
+    settings: &StripSettings,
+) -> Result<Response> {
+    if !(omega0 > 0.0 && omega0.is_finite()) {
+        return Err(Error::Invalid(format!(
+            "wave frequency must be positive, got {omega0}"
+        )));
+    }
+    if !speed.is_finite() || speed < 0.0 {
+        return Err(Error::Invalid(format!(
+            "speed must be finite and >= 0, got {speed}"
+        )));
+    }
+    let we = encounter_frequency(omega0, speed, model.g);
+    let strips = strips(model, we, settings)?;
+    Ok(respond_with(model, &strips, omega0, speed))
+}
+
+/// As [`respond`], reusing sectional solutions computed at the right encounter frequency.
+pub fn respond_with(model: &ShipModel, strips: &Strips, omega0: f64, speed: f64) -> Response {
+    let we = strips.omega_e;
+    let coef = coefficients(model, strips, speed);
+    let exc = excitation(model, strips, omega0, speed);
+    let m = mass_matrix(model);
+    let c = restoring(model);
+    let k = Matrix2::from_fn(|j, l| {
+        C64::new(c[j][l] - we * we * m[j][l], 0.0) - coef.z[j][l] * (we * we)
+    });
+    let f = Vector2::new(exc.f3, exc.f5);
+    // 2x2 by Cramer's rule (determinant is non-zero for any damped system)
+    let det = k[(0, 0)] * k[(1, 1)] - k[(0, 1)] * k[(1, 0)];
+    let heave = (f[0] * k[(1, 1)] - k[(0, 1)] * f[1]) / det;
+    let pitch = (k[(0, 0)] * f[1] - k[(1, 0)] * f[0]) / det;
+    Response {
+        omega0,
+        omega_e: we,
+        wave_number: omega0 * omega0 / model.g,
+        speed,
+        heave,
+        pitch,
+        excitation: exc,
+        coefficients: coef,
+    }
+}
+
+/// Uncoupled natural periods at zero speed, T = 2 pi sqrt((M + A(w_n)) / C) with the added mass at the
+/// natural frequency itself (fixed-point iteration). Returns (heave, pitch) in seconds.
+pub fn natural_periods(model: &ShipModel, settings: &StripSettings) -> Result<(f64, f64)> {
+    let m = mass_matrix(model);
+    let c = restoring(model);
+    let mut out = [0.0; 2];
+    for (j, o) in out.iter_mut().enumerate() {
+        let mut w = (c[j][j] / (2.0 * m[j][j])).sqrt();
+        let mut converged = false;
+        for _ in 0..60 {
+            let s = strips(model, w, settings)?;
+            let a = coefficients(model, &s, 0.0).added_mass[j][j];
+            let w_new = (c[j][j] / (m[j][j] + a)).sqrt();
+            if (w_new - w).abs() < 1e-7 * w {
+                w = w_new;
+                converged = true;
+                break;
+            }
+            w = 0.5 * (w + w_new);
+        }
+        if !converged || !w.is_finite() {
+            return Err(Error::Numerical(
+                "natural-frequency iteration did not converge".into(),
+            ));
+        }
+        *o = 2.0 * std::f64::consts::PI / w;
+    }
+    Ok((out[0], out[1]))
+}

@@ -1,0 +1,228 @@
+//! Wigley III validation against Journee (1992), data in data/reference/journee1992_wigley3.toml (with
+//! provenance). Tolerances are those of issue 4: coefficients and wave loads 15 %, heave RAO 15 %,
+//! zero-speed pitch RAO 25 % for lambda/L >= 1.
+
+use slamtool::seakeeping::section::HalfSection;
+use slamtool::seakeeping::strip_theory::{self, StripSettings};
+use slamtool::seakeeping::{ShipModel, StripSection};
+
+const G: f64 = 9.81;
+
+fn reference() -> toml::Table {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/data/reference/journee1992_wigley3.toml"
+    ))
+    .unwrap();
+    text.parse::<toml::Table>().unwrap()
+}
+
+fn arr(t: &toml::Table, table: &str, key: &str) -> Vec<f64> {
+    t[table][key]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_float().unwrap())
+        .collect()
+}
+
+/// Wigley III from its analytic form (alpha = 0): 2y/B = (1 - zeta^2)(1 - xi^2)(1 + 0.2 xi^2).
+pub fn wigley3(n_stations: usize) -> ShipModel {
+    let (l, b, t) = (3.0, 0.3, 0.1875);
+    let nz = 16;
+    let stations = (0..n_stations)
+        .map(|i| {
+            let xi = -1.0 + 2.0 * i as f64 / (n_stations - 1) as f64;
+            let hb = 0.5 * b * (1.0 - xi * xi) * (1.0 + 0.2 * xi * xi);
+            let section = if hb > 1e-9 {
+                let pts = (0..=nz)
+                    .map(|k| {
+                        let zeta = -1.0 + k as f64 / nz as f64;
+                        [hb * (1.0 - zeta * zeta), zeta * t]
+                    })
+                    .collect();
+                Some(HalfSection::new(pts).unwrap())
+            } else {
+                None
+            };
+            StripSection {
+                x: 0.5 * l * xi,
+                section,
+            }
+        })
+        .collect();
+    let mut m = ShipModel {
+        lpp: l,
+        rho: 1000.0,
+        g: G,
+        mass: 1.0,
+        xg: 0.0,
+        zg: 0.17 - t,
+        k_yy: 0.75,
+        stations,
+    };
+    m.mass = m.rho * m.volume();
+    m.validate().unwrap();
+    m
+}
+
+fn within(what: &str, got: f64, want: f64, tol: f64) -> bool {
+    let ok = (got - want).abs() <= tol * want.abs();
+    println!(
+        "{what}: computed {got:.4}, measured {want:.4}, diff {:+.1} % {}",
+        100.0 * (got / want - 1.0),
+        if ok { "ok" } else { "OUT" }
+    );
+    ok
+}
+
+#[test]
+fn wigley3_hydrostatics_match_the_report() {
+    let m = wigley3(41);
+    let r = reference();
+    let v = r["hull"]["volume_m3"].as_float().unwrap();
+    let awp = r["hull"]["waterplane_area_m2"].as_float().unwrap();
+    assert!((m.volume() - v).abs() < 0.01 * v, "volume {}", m.volume());
+    assert!(
+        (m.waterplane_area() - awp).abs() < 0.01 * awp,
+        "Awp {}",
+        m.waterplane_area()
+    );
+}
+
+#[test]
+fn wigley3_forced_heave_coefficients_fn030() {
+    let m = wigley3(41);
+    let r = reference();
+    let u = 0.3 * (G * m.lpp).sqrt();
+    let scale = (m.lpp / G).sqrt();
+    let rv = m.rho * m.volume();
+    let mut ok = true;
+    for ((wn, a), b) in arr(&r, "forced_heave_fn030", "omega_nd")
+        .iter()
+        .zip(arr(&r, "forced_heave_fn030", "a33_nd"))
+        .zip(arr(&r, "forced_heave_fn030", "b33_nd"))
+    {
+        let we = wn / scale;
+        let s = strip_theory::strips(&m, we, &StripSettings::default()).unwrap();
+        let c = strip_theory::coefficients(&m, &s, u);
+        ok &= within(&format!("A33'' w' {wn}"), c.added_mass[0][0] / rv, a, 0.15);
+        ok &= within(
+            &format!("B33'' w' {wn}"),
+            c.damping[0][0] / rv * scale,
+            b,
+            0.15,
+        );
+    }
+    assert!(ok, "forced-heave coefficients outside 15 %");
+}
+
+fn omega0_of(lambda_over_l: f64, l: f64) -> f64 {
+    (G * 2.0 * std::f64::consts::PI / (lambda_over_l * l)).sqrt()
+}
+
+#[test]
+fn wigley3_wave_loads_fn030() {
+    let m = wigley3(41);
+    let r = reference();
+    let u = 0.3 * (G * m.lpp).sqrt();
+    let c = strip_theory::restoring(&m);
+    let mut ok = true;
+    for ((lr, x3), x5) in arr(&r, "wave_loads_fn030", "lambda_over_l")
+        .iter()
+        .zip(arr(&r, "wave_loads_fn030", "x3_nd"))
+        .zip(arr(&r, "wave_loads_fn030", "x5_nd"))
+    {
+        let w0 = omega0_of(*lr, m.lpp);
+        let k = w0 * w0 / G;
+        let resp = strip_theory::respond(&m, w0, u, &StripSettings::default()).unwrap();
+        ok &= within(
+            &format!("X3'' lambda/L {lr}"),
+            resp.excitation.f3.norm() / c[0][0],
+            x3,
+            0.15,
+        );
+        ok &= within(
+            &format!("X5'' lambda/L {lr}"),
+            resp.excitation.f5.norm() / (k * c[1][1]),
+            x5,
+            0.15,
+        );
+    }
+    assert!(ok, "wave loads outside 15 %");
+}
+
+#[test]
+fn wigley3_heave_rao_fn030() {
+    let m = wigley3(41);
+    let r = reference();
+    let u = 0.3 * (G * m.lpp).sqrt();
+    let mut ok = true;
+    for (lr, h) in
+        arr(&r, "heave_rao_fn030", "lambda_over_l")
+            .iter()
+            .zip(arr(&r, "heave_rao_fn030", "heave"))
+    {
+        let resp =
+            strip_theory::respond(&m, omega0_of(*lr, m.lpp), u, &StripSettings::default()).unwrap();
+        ok &= within(
+            &format!("heave RAO Fn 0.3 lambda/L {lr}"),
+            resp.heave.norm(),
+            h,
+            0.15,
+        );
+    }
+    assert!(ok, "heave RAO at Fn 0.3 outside 15 %");
+}
+
+#[test]
+fn wigley3_zero_speed_raos() {
+    let m = wigley3(41);
+    let r = reference();
+    let mut ok = true;
+    for ((lr, h), p) in arr(&r, "zero_speed", "lambda_over_l")
+        .iter()
+        .zip(arr(&r, "zero_speed", "heave"))
+        .zip(arr(&r, "zero_speed", "pitch"))
+    {
+        if *lr < 1.0 {
+            continue;
+        }
+        let resp = strip_theory::respond(&m, omega0_of(*lr, m.lpp), 0.0, &StripSettings::default())
+            .unwrap();
+        ok &= within(
+            &format!("heave RAO Fn 0 lambda/L {lr}"),
+            resp.heave.norm(),
+            h,
+            0.15,
+        );
+        let theta = resp.pitch.norm() * m.lpp / (2.0 * std::f64::consts::PI);
+        ok &= within(&format!("pitch RAO Fn 0 lambda/L {lr}"), theta, p, 0.25);
+    }
+    assert!(ok, "zero-speed RAOs outside tolerance");
+}
+
+#[test]
+fn timman_newman_symmetry() {
+    let m = wigley3(41);
+    let u = 0.3 * (G * m.lpp).sqrt();
+    let s = strip_theory::strips(&m, 5.0, &StripSettings::default()).unwrap();
+    let plus = strip_theory::coefficients(&m, &s, u);
+    let minus = strip_theory::coefficients(&m, &s, -u);
+    let a = plus.added_mass[0][1];
+    let b = minus.added_mass[1][0];
+    assert!(
+        (a - b).abs() < 1e-9 * a.abs().max(1.0),
+        "A35(U) {a} vs A53(-U) {b}"
+    );
+    let a = plus.damping[0][1];
+    let b = minus.damping[1][0];
+    assert!(
+        (a - b).abs() < 1e-9 * a.abs().max(1.0),
+        "B35(U) {a} vs B53(-U) {b}"
+    );
+    // and the speed terms are really there: A35(U) differs from A53(U)
+    assert!(
+        (plus.added_mass[0][1] - plus.added_mass[1][0]).abs() > 1e-3 * plus.added_mass[0][1].abs()
+    );
+}
