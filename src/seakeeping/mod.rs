@@ -8,7 +8,10 @@
 //! The core works on its own input type [`ShipModel`] (stations with wetted half sections in the waterline
 //! frame); [`ShipModel::from_hull`] builds one from a `hull::Hull` and a loading condition.
 
+pub mod rao;
+pub mod relative_motion;
 pub mod section;
+pub mod slamming;
 pub mod strip_theory;
 
 use crate::error::{Error, Result};
@@ -68,7 +71,11 @@ impl ShipModel {
                 "strip theory needs at least three stations".into(),
             ));
         }
-        if self.stations.windows(2).any(|w| w[1].x.partial_cmp(&w[0].x) != Some(std::cmp::Ordering::Greater)) {
+        if self
+            .stations
+            .windows(2)
+            .any(|w| w[1].x.partial_cmp(&w[0].x) != Some(std::cmp::Ordering::Greater))
+        {
             return Err(Error::Invalid(
                 "stations must be sorted by increasing x without repeats".into(),
             ));

@@ -1,0 +1,124 @@
+//! Relative vertical motion and velocity between the hull and the local water surface at a station,
+//! keel-entry instants and the entry-velocity profile v(t) in regular waves (Veen 2010, ch. 6).
+//!
+//! Per unit wave amplitude, at station x (x forward), with zeta(x) = e^{ikx} the incident wave:
+//!
+//! s(x) = eta3 - x eta5 - zeta(x)          (positive: hull higher than the water surface)
+//! v(x) = Ds/Dt = i w_e s - U ds/dx = i w_e s + U eta5 + i k U zeta(x)
+//!
+//! D/Dt = d/dt - U d/dx is the rate of change seen in an earth-fixed transverse plane (the 2D+t slice) that
+//! the ship passes at speed U; the U eta5 term is the forward-speed contribution of pitch (Journee &
+//! Adegeest 2003; physics.md s. 1). An optional dynamic swell-up factor c >= 1 scales both (the bow wave
+//! raises the local surface; c = 1 means none).
+//!
+//! The keel at a station of local draft T is out of the water when s > T; keel entry happens when s falls
+//! through T, and from then on the section enters the water with velocity V(t) = -v(t) (downwards positive).
+
+use nalgebra::Complex;
+
+use super::strip_theory::Response;
+use crate::error::{Error, Result};
+
+type C64 = Complex<f64>;
+
+/// Relative motion and velocity at one station, per unit wave amplitude.
+#[derive(Debug, Clone, Copy)]
+pub struct RelativeMotion {
+    pub x: f64,
+    /// Relative vertical motion s (m per m of wave amplitude).
+    pub motion: C64,
+    /// Relative vertical velocity Ds/Dt (m/s per m of wave amplitude).
+    pub velocity: C64,
+}
+
+/// Relative motion at station x, with dynamic swell-up factor `swell_up` (1 for none).
+pub fn at_station(r: &Response, x: f64, swell_up: f64) -> Result<RelativeMotion> {
+    if !(swell_up.is_finite() && swell_up >= 1.0) {
+        return Err(Error::Invalid(format!(
+            "swell-up factor must be >= 1, got {swell_up}"
+        )));
+    }
+    let k = r.wave_number;
+    let zeta = C64::new(0.0, k * x).exp();
+    let s = r.heave - r.pitch * x - zeta;
+    let v = C64::new(0.0, r.omega_e) * s + r.pitch * r.speed + C64::new(0.0, k * r.speed) * zeta;
+    Ok(RelativeMotion {
+        x,
+        motion: s * swell_up,
+        velocity: v * swell_up,
+    })
+}
+
+/// One sample of an entry-velocity profile.
+#[derive(Debug, Clone, Copy, serde::Serialize)]
+pub struct EntrySample {
+    /// Time since keel entry (s).
+    pub t: f64,
+    /// Downward entry velocity V = -Ds/Dt (m/s).
+    pub velocity: f64,
+    /// Keel depth below the local water surface, T - s(t) (m).
+    pub penetration: f64,
+}
+
+/// Keel entry in a regular wave and the velocity profile after it.
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct KeelEntry {
+    pub x: f64,
+    /// Instant of keel entry within the encounter period, t in [0, T_e) (s; t = 0: crest at midship).
+    pub t_entry: f64,
+    pub encounter_period: f64,
+    /// Velocity at the instant of entry (m/s, downward positive).
+    pub entry_velocity: f64,
+    pub samples: Vec<EntrySample>,
+}
+
+/// Keel entry at a station of local draft `draft` in a regular wave of amplitude `zeta_a`. None when the
+/// keel does not emerge (|s| zeta_a <= draft). The profile runs from entry until the entry velocity
+/// reverses or the keel is `max_depth` below the surface (e.g. the section fully wetted), with `n` samples.
+pub fn keel_entry(
+    rm: &RelativeMotion,
+    omega_e: f64,
+    zeta_a: f64,
+    draft: f64,
+    max_depth: f64,
+    n: usize,
+) -> Option<KeelEntry> {
+    let amp = rm.motion.norm() * zeta_a;
+    if amp <= draft || n < 2 {
+        return None;
+    }
+    let period = 2.0 * std::f64::consts::PI / omega_e;
+    // s(t) = amp cos(w t + phi) falls through draft where w t + phi = arccos(draft / amp)
+    let phase = (draft / amp).acos() - rm.motion.arg();
+    let t_entry = (phase / omega_e).rem_euclid(period);
+    let s_at = |t: f64| (rm.motion * Complex::new(0.0, omega_e * t).exp()).re * zeta_a;
+    let v_at = |t: f64| -(rm.velocity * Complex::new(0.0, omega_e * t).exp()).re * zeta_a;
+    // end: first time after entry where the velocity reverses or the depth reaches max_depth
+    let steps = 2000;
+    let dt = period / steps as f64;
+    let mut t_end = period * 0.5;
+    for i in 1..=steps {
+        let t = t_entry + i as f64 * dt;
+        if v_at(t) <= 0.0 || draft - s_at(t) >= max_depth {
+            t_end = t;
+            break;
+        }
+    }
+    let samples = (0..n)
+        .map(|i| {
+            let t = t_entry + (t_end - t_entry) * i as f64 / (n - 1) as f64;
+            EntrySample {
+                t: t - t_entry,
+                velocity: v_at(t),
+                penetration: draft - s_at(t),
+            }
+        })
+        .collect();
+    Some(KeelEntry {
+        x: rm.x,
+        t_entry,
+        encounter_period: period,
+        entry_velocity: v_at(t_entry),
+        samples,
+    })
+}

@@ -1,0 +1,198 @@
+//! Slamming statistics in irregular head seas by Ochi's (1964) criterion.
+//!
+//! A slam at a station needs the keel to emerge (relative motion above the local draft T) and the
+//! re-entry relative velocity to exceed v_th = 0.093 sqrt(g Lpp). For a Gaussian sea with the spectral
+//! moments m0 (relative motion variance) and m2 (relative velocity variance):
+//!
+//! P(slam per encounter) = exp(-T^2/(2 m0) - v_th^2/(2 m2)),
+//! slams per hour = 3600/(2 pi) sqrt(m2/m0) P
+//!
+//! (Ochi 1964, as given in ../reference/water_entry_theory.md). Given a slam, the entry velocity is Rayleigh
+//! distributed above v_th: P(V > v | slam) = exp(-(v^2 - v_th^2)/(2 m2)), so the most probable largest of
+//! N slams is sqrt(v_th^2 + 2 m2 ln N). The operability limit is the highest speed at which the slam
+//! probability stays below a limit (3 % per encounter by default, ship-handling practice).
+
+use super::ShipModel;
+use super::relative_motion;
+use super::strip_theory::{self, StripSettings};
+use crate::error::{Error, Result};
+
+/// Ochi's (1964) threshold velocity 0.093 sqrt(g Lpp) (m/s).
+pub fn threshold_velocity(g: f64, lpp: f64) -> f64 {
+    0.093 * (g * lpp).sqrt()
+}
+
+/// Default operability limit on the slam probability per encounter.
+pub const DEFAULT_SLAM_PROBABILITY_LIMIT: f64 = 0.03;
+
+/// Wave spectrum sampled on increasing wave frequencies: (w0, S(w0)) in (rad/s, m^2 s).
+#[derive(Debug, Clone)]
+pub struct SampledSpectrum {
+    pub omega: Vec<f64>,
+    pub density: Vec<f64>,
+}
+
+impl SampledSpectrum {
+    pub fn new(omega: Vec<f64>, density: Vec<f64>) -> Result<Self> {
+        if omega.len() < 3 || omega.len() != density.len() {
+            return Err(Error::Invalid(
+                "spectrum needs at least three (omega, S) samples".into(),
+            ));
+        }
+        if omega
+            .windows(2)
+            .any(|w| w[1].partial_cmp(&w[0]) != Some(std::cmp::Ordering::Greater))
+            || omega[0] <= 0.0
+            || density.iter().any(|s| !s.is_finite() || *s < 0.0)
+        {
+            return Err(Error::Invalid(
+                "spectrum frequencies must increase from > 0, densities be >= 0".into(),
+            ));
+        }
+        Ok(Self { omega, density })
+    }
+
+    /// Sample a spectral density function between w_min and w_max with n points.
+    pub fn from_fn(f: impl Fn(f64) -> f64, w_min: f64, w_max: f64, n: usize) -> Result<Self> {
+        let omega: Vec<f64> = (0..n)
+            .map(|i| w_min + (w_max - w_min) * i as f64 / (n - 1) as f64)
+            .collect();
+        let density = omega.iter().map(|&w| f(w)).collect();
+        Self::new(omega, density)
+    }
+
+    /// Zeroth moment (wave elevation variance).
+    pub fn m0(&self) -> f64 {
+        crate::numerics::quadrature::trapezoid(&self.omega, &self.density)
+    }
+}
+
+/// Slam statistics at one station and speed.
+#[derive(Debug, Clone, Copy, serde::Serialize)]
+pub struct SlamStatistics {
+    pub x: f64,
+    pub speed: f64,
+    pub draft: f64,
+    /// Relative-motion variance m0 (m^2).
+    pub m0: f64,
+    /// Relative-velocity variance m2 (m^2/s^2).
+    pub m2: f64,
+    pub threshold_velocity: f64,
+    pub probability: f64,
+    pub slams_per_hour: f64,
+}
+
+impl SlamStatistics {
+    /// Most probable largest entry velocity in `n` slams (m/s).
+    pub fn most_probable_extreme_velocity(&self, n: f64) -> f64 {
+        (self.threshold_velocity.powi(2) + 2.0 * self.m2 * n.max(1.0).ln()).sqrt()
+    }
+}
+
+/// Ochi statistics from the moments.
+pub fn ochi(x: f64, speed: f64, draft: f64, m0: f64, m2: f64, v_th: f64) -> SlamStatistics {
+    let (probability, rate) = if m0 > 0.0 && m2 > 0.0 {
+        let p = (-draft * draft / (2.0 * m0) - v_th * v_th / (2.0 * m2)).exp();
+        (
+            p,
+            3600.0 / (2.0 * std::f64::consts::PI) * (m2 / m0).sqrt() * p,
+        )
+    } else {
+        (0.0, 0.0)
+    };
+    SlamStatistics {
+        x,
+        speed,
+        draft,
+        m0,
+        m2,
+        threshold_velocity: v_th,
+        probability,
+        slams_per_hour: rate,
+    }
+}
+
+/// Slam statistics at the given stations (x, local draft) for one speed in a sampled head-sea spectrum.
+pub fn statistics(
+    model: &ShipModel,
+    spectrum: &SampledSpectrum,
+    speed: f64,
+    stations: &[(f64, f64)],
+    swell_up: f64,
+    settings: &StripSettings,
+) -> Result<Vec<SlamStatistics>> {
+    let mut s2 = vec![vec![0.0; spectrum.omega.len()]; stations.len()];
+    let mut v2 = s2.clone();
+    for (j, &w0) in spectrum.omega.iter().enumerate() {
+        let r = strip_theory::respond(model, w0, speed, settings)?;
+        for (i, &(x, _)) in stations.iter().enumerate() {
+            let rm = relative_motion::at_station(&r, x, swell_up)?;
+            s2[i][j] = rm.motion.norm_sqr() * spectrum.density[j];
+            v2[i][j] = rm.velocity.norm_sqr() * spectrum.density[j];
+        }
+    }
+    let v_th = threshold_velocity(model.g, model.lpp);
+    Ok(stations
+        .iter()
+        .enumerate()
+        .map(|(i, &(x, draft))| {
+            let m0 = crate::numerics::quadrature::trapezoid(&spectrum.omega, &s2[i]);
+            let m2 = crate::numerics::quadrature::trapezoid(&spectrum.omega, &v2[i]);
+            ochi(x, speed, draft, m0, m2, v_th)
+        })
+        .collect())
+}
+
+/// Operability: slam probability (highest over the stations) per speed and the speed limit.
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct Operability {
+    pub limit: f64,
+    pub speeds: Vec<f64>,
+    pub max_probability: Vec<f64>,
+    /// Highest speed with the slam probability below the limit (linear interpolation between the last
+    /// acceptable and the first unacceptable speed); None when even the lowest speed exceeds the limit.
+    pub limit_speed: Option<f64>,
+}
+
+/// The operability limit from the probabilities at increasing speeds.
+pub fn operability_limit(
+    speeds: &[f64],
+    max_probability: &[f64],
+    limit: f64,
+) -> Result<Operability> {
+    if !(limit > 0.0 && limit < 1.0) {
+        return Err(Error::Invalid(format!(
+            "slam probability limit must be in (0, 1), got {limit}"
+        )));
+    }
+    if speeds.is_empty() || speeds.len() != max_probability.len() {
+        return Err(Error::Invalid(
+            "operability needs one probability per speed".into(),
+        ));
+    }
+    if speeds
+        .windows(2)
+        .any(|w| w[1].partial_cmp(&w[0]) != Some(std::cmp::Ordering::Greater))
+    {
+        return Err(Error::Invalid("speeds must increase".into()));
+    }
+    let mut limit_speed = None;
+    for i in 0..speeds.len() {
+        if max_probability[i] <= limit {
+            limit_speed = Some(speeds[i]);
+        } else {
+            if i > 0 && limit_speed.is_some() {
+                let (p0, p1) = (max_probability[i - 1], max_probability[i]);
+                let f = (limit - p0) / (p1 - p0);
+                limit_speed = Some(speeds[i - 1] + f * (speeds[i] - speeds[i - 1]));
+            }
+            break;
+        }
+    }
+    Ok(Operability {
+        limit,
+        speeds: speeds.to_vec(),
+        max_probability: max_probability.to_vec(),
+        limit_speed,
+    })
+}
