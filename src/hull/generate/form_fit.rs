@@ -121,9 +121,9 @@ pub fn fit_form(t: &FormTargets) -> Result<FittedForm> {
     }
     let (mut pi, mut pj, mut pv) = (vec![], vec![], vec![]);
     for block in 0..2 {
-        for i in 0..n {
-            for j in i..n {
-                let mut v = 2.0 * g[i][j];
+        for (i, gi) in g.iter().enumerate() {
+            for (j, gij) in gi.iter().enumerate().skip(i) {
+                let mut v = 2.0 * gij;
                 if i == j {
                     v += 1e-8;
                 }
