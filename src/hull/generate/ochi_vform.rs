@@ -48,8 +48,9 @@ pub const SENSOR_GIRTH_FRACTIONS: [f64; 4] = [0.1, 0.35, 0.6, 0.85];
 pub const STATIONS: usize = 41;
 /// Largest section area coefficient forward of 0.1 Lpp aft of the FP: V-sections (reconstruction choice).
 pub const SIGMA_MAX_FORWARD: f64 = 0.6;
-/// Shape exponent of the flare above the waterline.
-pub const FLARE_EXPONENT: f64 = 2.0;
+/// The side above the waterline continues, straight, the mean slope of the section over this top fraction
+/// of the draft.
+pub const FLARE_SLOPE_SPAN: f64 = 0.1;
 
 /// Block coefficient implied by the published displacement in fresh water.
 pub fn cb_target() -> f64 {
@@ -105,13 +106,15 @@ fn section_points(form: &FittedForm, u: f64) -> Result<Vec<[f64; 2]>> {
         draft: DRAFT_MAX,
         sigma,
     };
+    // dy/dz of the side continued above the waterline: the chord slope over the top of the section.
+    let span = FLARE_SLOPE_SPAN * DRAFT_MAX;
+    let wl_slope = (b - lower.y(DRAFT_MAX - span)) / span;
     let flare = Flare {
         half_breadth_wl: b,
-        half_breadth_deck: (b + (DEPTH - DRAFT_MAX) * b * (1.0 - sigma) / (sigma * DRAFT_MAX))
-            .min(0.5 * BEAM),
+        half_breadth_deck: (b + (DEPTH - DRAFT_MAX) * wl_slope).min(0.5 * BEAM),
         z_wl: DRAFT_MAX,
         z_deck: DEPTH,
-        exponent: FLARE_EXPONENT,
+        exponent: 1.0,
     };
     let mut levels = lower.z_levels(12);
     levels.extend(flare.z_levels(6));
@@ -177,9 +180,9 @@ zero area and breadth at AP and FP) and section bounds 0.5 b T <= A/2 <= sigma_m
 sigma_max = 0.6 forward of 0.1 Lpp aft of FP (V-sections), rising linearly to Cm at 0.3 Lpp. Sections below \
 the waterline are y = b [1 - (1 - z/T)^q] with q = sigma/(1 - sigma) (sigma 0.5 = straight V, near 1 = \
 rectangle with small bilge); keel on the baseline from AP to FP, no forefoot or cutaway. Above the \
-waterline the side flares as y = b + D s^2, s = (z - T)/(depth - T), with the deck half-breadth increase \
-D = (depth - T) b (1 - sigma)/(sigma T) (a straight V continues its slope; a full section stays nearly \
-wall-sided), the deck half-breadth not exceeding half the beam, up to an assumed deck at {DEPTH} m (depth not published).\n\
+waterline the side continues as a straight line with the mean slope of the section over the top 10 % of the \
+draft (a V section continues its V, a full section stays nearly wall-sided), the deck half-breadth not \
+exceeding half the beam, up to an assumed deck at {DEPTH} m (depth not published).\n\
 \n\
 Fitted curves: Cb {cb:.4}, Cm {cm:.4}, Cp {cp:.4}, Cwp {cwp:.4}, LCB {lcb:+.2} % Lpp from midship (+ \
 forward; LCB not published). The offsets below reproduce these to within their discretisation ({nst} \
