@@ -242,9 +242,7 @@ flare chord {chord:.1} deg; panel P1 centred {zp:.4} m above baseline, where the
 {local:.1} deg (its position on the flare is not published).\n\
 \n\
 Loading 'design': design draft even keel; k_yy = 0.25 Lpp (conventional), LCG = LCB (lcg_m omitted), KG \
-{KG_FULL} m full scale = {kg:.4} m model (assumed).\n\
-\n\
-Regenerate with: slamtool hull generate car-carrier -o hulls/car-carrier-hm2005.toml",
+{KG_FULL} m full scale = {kg:.4} m model (assumed).",
         lpp = lpp(),
         cb = block_coefficient_of_curves(),
         depth = depth(),

@@ -20,6 +20,8 @@ pub mod toml_writer;
 pub mod wigley;
 
 use crate::error::Result;
+use crate::hull::{Hull, Hydrostatics};
+use crate::input::SourceText;
 
 /// The content of a hull file, as a generator builds it.
 #[derive(Debug, Clone, PartialEq)]
@@ -129,17 +131,61 @@ impl GeneratedHull {
         }
     }
 
-    /// Build the hull.
+    /// Build the hull. Its description ends with the hydrostatics of the offsets as written (computed by
+    /// [`Hydrostatics`] from the file text) and the command that regenerates it.
     pub fn spec(self) -> Result<HullSpec> {
-        match self {
-            GeneratedHull::WigleyIii => Ok(wigley::wigley_iii()),
-            GeneratedHull::OchiVform => ochi_vform::ochi_vform(),
-            GeneratedHull::CarCarrier => car_carrier::car_carrier_hm2005(),
-        }
+        let mut spec = match self {
+            GeneratedHull::WigleyIii => wigley::wigley_iii(),
+            GeneratedHull::OchiVform => ochi_vform::ochi_vform()?,
+            GeneratedHull::CarCarrier => car_carrier::car_carrier_hm2005()?,
+        };
+        let summary = hydrostatics_summary(&spec)?;
+        spec.description = format!(
+            "{}\n\n{summary}\n\nRegenerate with: slamtool hull generate {} -o hulls/{}",
+            spec.description.trim_end(),
+            self.cli_name(),
+            self.file_name()
+        );
+        Ok(spec)
     }
 
     /// The hull file text.
     pub fn toml(self) -> Result<String> {
         Ok(self.spec()?.to_toml())
     }
+}
+
+/// The hydrostatics of a generated hull at each of its loadings, read back from its own file text, in
+/// words for the description.
+pub fn hydrostatics_summary(spec: &HullSpec) -> Result<String> {
+    let src = SourceText::from_string("<generated hull>", spec.to_toml());
+    let hull = Hull::from_source(&src)?;
+    let mut out = format!(
+        "Hydrostatics of these offsets (slamtool, {} stations):",
+        hull.stations.len()
+    );
+    for l in &hull.loadings {
+        let h = Hydrostatics::compute(&hull, l);
+        out.push_str(&format!(
+            " '{}': draft FP {:.4} m, AP {:.4} m, volume {:.6} m3, buoyancy {:.2} kg, LCB {:+.4} m, KB {:.4} m, \
+waterplane {:.4} m2, LCF {:+.4} m, beam {:.4} m, Cb {:.4}, Cp {:.4}, Cm {:.4}, Cwp {:.4}, GM_T {:.4} m, GM_L {:.3} m.",
+            l.name,
+            l.draft_fp,
+            l.draft_ap,
+            h.volume,
+            h.displacement_kg,
+            h.lcb,
+            h.kb,
+            h.awp,
+            h.lcf,
+            h.beam_wl_m,
+            h.cb,
+            h.cp,
+            h.cm,
+            h.cwp,
+            h.gm_t,
+            h.gm_l
+        ));
+    }
+    Ok(out)
 }

@@ -197,9 +197,7 @@ properties not published take conventional values: k_yy = 0.25 Lpp, LCG = LCB (l
 Sensors: the four instrumented sections (0.093, 0.133, 0.174, 0.227 Lpp aft of FP) and the 0.02 m sensor \
 diameter are published; the positions on each section are not, so four sensors per section are placed at \
 0.10, 0.35, 0.60 and 0.85 of the wetted girth at the test condition, from near the keel towards the \
-waterline (S093-1 nearest the keel). Ochi had 19 sensors in all; the other 3 are not modelled.\n\
-\n\
-Regenerate with: slamtool hull generate ochi-vform -o hulls/ochi-vform.toml",
+waterline (S093-1 nearest the keel). Ochi had 19 sensors in all; the other 3 are not modelled.",
         cb_t = cb_target(),
         cp_t = cb_target() / CM,
         cp = cb / cm,

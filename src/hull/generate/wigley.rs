@@ -71,8 +71,7 @@ analytic form 2y/B = (1 - zeta^2)(1 - xi^2)(1 + 0.2 xi^2) (alpha = 0), xi = 2x/L
 the waterline. L {LENGTH} m, B {BEAM} m, T {DRAFT} m. Published: volume 0.0780 m3, waterplane area 0.6240 m2, \
 Cb 0.4622, KG 0.170 m, k_yy 0.75 m, fresh water. Offsets: {STATIONS} uniformly spaced stations, \
 {SECTION_INTERVALS} uniform intervals in z from keel to waterline. The form is defined below the waterline \
-only: above it the sides are continued vertically to a deck at {DEPTH} m (chosen, not published). \
-Regenerate with: slamtool hull generate wigley-iii -o hulls/wigley-iii.toml"
+only: above it the sides are continued vertically to a deck at {DEPTH} m (chosen, not published)."
     );
     HullSpec {
         name: "Wigley III (Journee 1992)".into(),
