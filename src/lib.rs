@@ -26,6 +26,7 @@ pub mod files;
 pub mod hull;
 pub mod input;
 pub mod numerics;
+pub mod provenance;
 pub mod sea;
 
 pub use error::{Error, InputError, Result};

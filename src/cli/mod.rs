@@ -7,6 +7,7 @@ use clap::{CommandFactory, Parser, Subcommand};
 mod completions;
 mod hull;
 mod hull_generate;
+mod sea;
 
 /// 2D+t ship-slamming design tool: strip theory, SPH water entry, analytic cross-checks, design reports.
 #[derive(Debug, Parser)]
@@ -21,6 +22,9 @@ enum Command {
     /// Hull definition: hydrostatics, form coefficients, sections.
     #[command(subcommand)]
     Hull(hull::HullCommand),
+    /// Sea states: regular waves, spectra, speeds.
+    #[command(subcommand)]
+    Sea(sea::SeaCommand),
     /// Print a shell completion script.
     Completions(completions::CompletionsArgs),
     /// Print the manual page (roff) on stdout.
@@ -31,6 +35,7 @@ pub fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Hull(c) => hull::run(c),
+        Command::Sea(c) => sea::run(c),
         Command::Completions(a) => completions::run(a, &mut Cli::command()),
         Command::Man => completions::man(&Cli::command()),
     };

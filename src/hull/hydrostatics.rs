@@ -11,13 +11,17 @@
 //! * C_B = ∇/(L B T), C_M = A_M/(B T), C_P = ∇/(A_M L), C_WP = A_wp/(L B), with L = Lpp, B the largest
 //!   waterline breadth, T the mean draft and A_M the midship (x = 0) sectional area.
 //!
-//! The integrals over x are exact integrals of the PCHIP interpolant through the station values (the same
-//! shape-preserving interpolation the sections use).
+//! The integrals over x use Gauss-Legendre quadrature (6 points per station interval) on the sections
+//! interpolated between stations (shape-preserving PCHIP, see `interpolate`), each cut by its own local
+//! waterline, so trim is exact for any station spacing.
 
 use serde::Serialize;
 
-use super::{Hull, LoadingCondition};
-use crate::numerics::Pchip;
+use super::{Hull, LoadingCondition, SectionProperties};
+
+/// Gauss-Legendre points per station interval.
+const GAUSS_POINTS: usize = 6;
+use crate::numerics::quadrature::gauss_legendre;
 
 /// Sectional area at one station.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -82,38 +86,46 @@ impl Hydrostatics {
     pub fn compute(hull: &Hull, loading: &LoadingCondition) -> Self {
         let lpp = hull.lpp;
         let n = hull.stations.len();
-        let mut xs = Vec::with_capacity(n);
-        let (mut a, mut ax, mut az, mut b2, mut b2x, mut b2xx, mut b3) =
-            (vec![], vec![], vec![], vec![], vec![], vec![], vec![]);
-        let mut sac = Vec::with_capacity(n);
-        for st in &hull.stations {
-            let t = loading.draft_at(st.x, lpp);
-            let p = st.section.properties(t);
-            xs.push(st.x);
-            a.push(p.area);
-            ax.push(p.area * st.x);
-            az.push(p.area * p.centroid_z);
-            let b = p.half_breadth;
-            b2.push(2.0 * b);
-            b2x.push(2.0 * b * st.x);
-            b2xx.push(2.0 * b * st.x * st.x);
-            b3.push(2.0 / 3.0 * b * b * b);
-            sac.push(SectionalArea {
-                x_m: st.x,
-                area_m2: p.area,
-                draft_m: t,
-                half_breadth_m: b,
-            });
+        let xs: Vec<f64> = hull.stations.iter().map(|s| s.x).collect();
+        let sac: Vec<SectionalArea> = hull
+            .stations
+            .iter()
+            .map(|st| {
+                let t = loading.draft_at(st.x, lpp);
+                let p = st.section.properties(t);
+                SectionalArea {
+                    x_m: st.x,
+                    area_m2: p.area,
+                    draft_m: t,
+                    half_breadth_m: p.half_breadth,
+                }
+            })
+            .collect();
+        // Section properties at every quadrature node, each under its own local waterline.
+        let (nodes, weights) = gauss_legendre(GAUSS_POINTS);
+        let mut samples = Vec::with_capacity((n - 1) * GAUSS_POINTS);
+        for w in xs.windows(2) {
+            let (mid, half) = (0.5 * (w[0] + w[1]), 0.5 * (w[1] - w[0]));
+            for (t, wt) in nodes.iter().zip(&weights) {
+                let x = mid + half * t;
+                let p = hull
+                    .section_at(x)
+                    .expect("node lies between stations")
+                    .properties(loading.draft_at(x, lpp));
+                samples.push((x, wt * half, p));
+            }
         }
-        let int = |f: &[f64]| Pchip::new(&xs, f).integral();
-        let volume = int(&a);
+        let int = |f: &dyn Fn(f64, &SectionProperties) -> f64| -> f64 {
+            samples.iter().map(|(x, w, p)| w * f(*x, p)).sum()
+        };
+        let volume = int(&|_, p| p.area);
         let safe = |num: f64, den: f64| if den > 0.0 { num / den } else { 0.0 };
-        let lcb = safe(int(&ax), volume);
-        let kb = safe(int(&az), volume);
-        let awp = int(&b2);
-        let lcf = safe(int(&b2x), awp);
-        let i_l = int(&b2xx) - awp * lcf * lcf;
-        let i_t = int(&b3);
+        let lcb = safe(int(&|x, p| x * p.area), volume);
+        let kb = safe(int(&|_, p| p.area * p.centroid_z), volume);
+        let awp = int(&|_, p| 2.0 * p.half_breadth);
+        let lcf = safe(int(&|x, p| 2.0 * x * p.half_breadth), awp);
+        let i_l = int(&|x, p| 2.0 * p.half_breadth * (x - lcf).powi(2));
+        let i_t = int(&|_, p| 2.0 / 3.0 * p.half_breadth.powi(3));
         let bm_t = safe(i_t, volume);
         let bm_l = safe(i_l, volume);
         let t_mean = loading.mean_draft();

@@ -1,7 +1,8 @@
 //! Sections between stations by shape-preserving interpolation.
 //!
 //! Each station contour is resampled at the same set of normalised girths s ∈ [0, 1] (arc length from the
-//! keel over total girth). For every s, the offsets y(x; s) and z(x; s) are interpolated along the ship by
+//! keel over total girth): a uniform set together with the normalised girth of every vertex of every
+//! station, so knuckles and chines are kept sharp. For every s, the offsets y(x; s) and z(x; s) are interpolated along the ship by
 //! PCHIP (Fritsch & Carlson 1980): monotone where the offsets are monotone and without new extrema, so the
 //! interpolated hull never bulges beyond the lines plan. At a station the given contour is returned as is.
 //! Because z must rise from keel to deck, the interpolated heights are made non-decreasing along the contour
@@ -10,8 +11,8 @@
 use super::{Section, Station};
 use crate::numerics::Pchip;
 
-/// Number of girth samples per contour.
-const SAMPLES: usize = 161;
+/// Number of uniformly spaced girth samples per contour (vertices are added to these).
+const UNIFORM_SAMPLES: usize = 161;
 
 #[derive(Debug, Clone)]
 pub(crate) struct SectionInterpolator {
@@ -22,10 +23,14 @@ pub(crate) struct SectionInterpolator {
 impl SectionInterpolator {
     pub fn new(stations: &[Station]) -> Self {
         let xs: Vec<f64> = stations.iter().map(|s| s.x).collect();
-        let resampled: Vec<Vec<[f64; 2]>> = stations.iter().map(|s| resample(&s.section)).collect();
-        let mut y = Vec::with_capacity(SAMPLES);
-        let mut z = Vec::with_capacity(SAMPLES);
-        for j in 0..SAMPLES {
+        let params = sample_girths(stations);
+        let resampled: Vec<Vec<[f64; 2]>> = stations
+            .iter()
+            .map(|s| resample(&s.section, &params))
+            .collect();
+        let mut y = Vec::with_capacity(params.len());
+        let mut z = Vec::with_capacity(params.len());
+        for j in 0..params.len() {
             let yj: Vec<f64> = resampled.iter().map(|r| r[j][0]).collect();
             let zj: Vec<f64> = resampled.iter().map(|r| r[j][1]).collect();
             y.push(Pchip::new(&xs, &yj));
@@ -38,9 +43,9 @@ impl SectionInterpolator {
         if let Some(s) = stations.iter().find(|s| (s.x - x).abs() <= 1e-12) {
             return s.section.clone();
         }
-        let mut pts: Vec<[f64; 2]> = Vec::with_capacity(SAMPLES);
+        let mut pts: Vec<[f64; 2]> = Vec::with_capacity(self.y.len());
         let mut zmax = f64::NEG_INFINITY;
-        for j in 0..SAMPLES {
+        for j in 0..self.y.len() {
             let yv = self.y[j].eval(x).max(0.0);
             let zv = self.z[j].eval(x).max(zmax);
             zmax = zv;
@@ -58,14 +63,29 @@ impl SectionInterpolator {
     }
 }
 
-/// The contour at SAMPLES equally spaced normalised girths, keeping the end points exactly.
-fn resample(section: &Section) -> Vec<[f64; 2]> {
+/// Normalised girths to sample: uniform ones plus every station's vertices, sorted and de-duplicated.
+fn sample_girths(stations: &[Station]) -> Vec<f64> {
+    let mut s: Vec<f64> = (0..UNIFORM_SAMPLES)
+        .map(|j| j as f64 / (UNIFORM_SAMPLES - 1) as f64)
+        .collect();
+    for st in stations {
+        let g = st.section.girths();
+        let total = g[g.len() - 1];
+        if total > 0.0 {
+            s.extend(g.iter().map(|gi| gi / total));
+        }
+    }
+    s.sort_by(f64::total_cmp);
+    s.dedup_by(|a, b| (*a - *b).abs() < 1e-9);
+    s
+}
+
+/// The contour at the given normalised girths.
+fn resample(section: &Section, params: &[f64]) -> Vec<[f64; 2]> {
     let total = section.girth();
-    (0..SAMPLES)
-        .map(|j| {
-            let s = total * j as f64 / (SAMPLES - 1) as f64;
-            section.point_at_girth(s)
-        })
+    params
+        .iter()
+        .map(|s| section.point_at_girth(s * total))
         .collect()
 }
 

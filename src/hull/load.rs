@@ -6,7 +6,9 @@ use toml::Spanned;
 
 use super::schema::{HullFile, LoadingRaw, SensorRaw, StationRaw};
 use super::validate::check_section;
-use super::{Hull, LoadingCondition, Section, Sensor, Station, offsets_csv, station_x};
+use super::{
+    Hull, LoadingCondition, Section, SectionInterpolator, Sensor, Station, offsets_csv, station_x,
+};
 use crate::error::{Error, InputError, Result};
 use crate::input::{SourceText, finite, in_range, positive};
 
@@ -48,16 +50,17 @@ pub(crate) fn hull_from_source(src: &SourceText) -> Result<Hull> {
     };
 
     let loadings = loadings(src, lpp, depth, &raw.loading)?;
-    let mut hull = Hull::assemble(
-        raw.name.clone(),
-        raw.description.clone(),
+    let mut hull = Hull {
+        name: raw.name.clone(),
+        description: raw.description.clone(),
         lpp,
         depth,
+        interpolator: SectionInterpolator::new(&stations),
         stations,
         loadings,
-        Vec::new(),
-        src.path.clone(),
-    );
+        sensors: Vec::new(),
+        source: src.path.clone(),
+    };
     for l in &raw.loading.get_ref()[..] {
         check_immersed(src, &hull, l)?;
     }

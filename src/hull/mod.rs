@@ -21,7 +21,7 @@ pub use section::{Section, SectionProperties};
 
 use crate::error::{Error, Result};
 use crate::input::SourceText;
-use interpolate::SectionInterpolator;
+pub(crate) use interpolate::SectionInterpolator;
 
 /// One offset station.
 #[derive(Debug, Clone, PartialEq)]
@@ -112,30 +112,6 @@ impl Hull {
     /// Validate a hull from text (the path is used for error messages and relative CSV files).
     pub fn from_source(src: &SourceText) -> Result<Self> {
         load::hull_from_source(src)
-    }
-
-    pub(crate) fn assemble(
-        name: String,
-        description: Option<String>,
-        lpp: f64,
-        depth: f64,
-        stations: Vec<Station>,
-        loadings: Vec<LoadingCondition>,
-        sensors: Vec<Sensor>,
-        source: PathBuf,
-    ) -> Self {
-        let interpolator = SectionInterpolator::new(&stations);
-        Self {
-            name,
-            description,
-            lpp,
-            depth,
-            stations,
-            loadings,
-            sensors,
-            source,
-            interpolator,
-        }
     }
 
     /// x of a station given as a fraction of Lpp aft of the FP.

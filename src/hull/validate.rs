@@ -71,7 +71,7 @@ pub(crate) fn check_section(points: &[[f64; 2]]) -> Result<(), SectionFault> {
                         j + 1,
                         format!(
                             "section folds back on itself at point {} (the contour reverses along a line)",
-                            j + 1
+                            j + 2
                         ),
                     ));
                 }
@@ -79,7 +79,7 @@ pub(crate) fn check_section(points: &[[f64; 2]]) -> Result<(), SectionFault> {
                 return Err((
                     j + 1,
                     format!(
-                        "section is self-intersecting: segment {}-{} crosses segment {}-{}",
+                        "section is self-intersecting: segment {}-{} touches segment {}-{}",
                         i + 1,
                         i + 2,
                         j + 1,
