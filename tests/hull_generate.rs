@@ -168,6 +168,18 @@ fn ochi_vform_test_condition_and_v_sections_forward() {
             "section at {f} Lpp aft of FP: sigma {sigma:.3}"
         );
     }
+    // Veen (2010): the sections at 0.093 and 0.133 Lpp are V-shaped, the one at 0.174 Lpp flat-bottomed.
+    for (f, flat) in [(0.093, false), (0.133, false), (0.174, true)] {
+        let s = hull.section_at(hull.station_x(f)).unwrap();
+        let p = s.points[1];
+        let has_flat = p[1] == s.points[0][1] && p[0] > 0.05;
+        assert_eq!(
+            has_flat,
+            flat,
+            "section at {f} Lpp aft of FP: {:?}",
+            &s.points[..3]
+        );
+    }
     // Four sensors on each instrumented section, below the test-condition waterline.
     let stations = nums(&r, "instrumentation", "stations_aft_of_fp");
     let diameter = num(&r, "instrumentation", "sensor_diameter_m");

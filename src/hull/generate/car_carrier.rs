@@ -155,11 +155,7 @@ pub fn flare(f: f64) -> Flare {
 pub fn section_points(f: f64) -> Result<Vec<[f64; 2]>> {
     let t = draft();
     let b = 0.5 * beam() * beta(f);
-    let lower = PowerSection {
-        half_breadth: b,
-        draft: t,
-        sigma: sigma(f),
-    };
+    let lower = PowerSection::new(b, t, sigma(f));
     let fl = flare(f);
     if fl.half_breadth_deck < fl.half_breadth_wl {
         return Err(Error::Numerical(format!(

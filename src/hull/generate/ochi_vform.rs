@@ -70,6 +70,21 @@ fn sigma_max(u: f64) -> f64 {
     }
 }
 
+/// Flat of bottom: none forward of `FLAT_START` Lpp aft of the FP (V-sections), then the half-width
+/// fraction w = λ (2σ − 1) of the waterline half-breadth, λ rising linearly from 0 to `FLAT_FRACTION` over
+/// `FLAT_RAMP` Lpp. Veen (2010) describes the instrumented section at 0.174 Lpp as flat-bottomed and the
+/// ones forward of it as V-shaped; where the flat-of-bottom line meets the keel is not published.
+pub const FLAT_START: f64 = 0.14;
+pub const FLAT_RAMP: f64 = 0.03;
+pub const FLAT_FRACTION: f64 = 0.8;
+
+/// Flat-of-bottom half-width over the waterline half-breadth at f (fraction of Lpp aft of FP) for a
+/// section of area coefficient σ.
+pub fn flat_fraction(f: f64, sigma: f64) -> f64 {
+    let lambda = FLAT_FRACTION * ((f - FLAT_START) / FLAT_RAMP).clamp(0.0, 1.0);
+    lambda * (2.0 * sigma - 1.0).max(0.0)
+}
+
 /// The fitted form curves.
 pub fn fitted_form() -> Result<FittedForm> {
     fit_form(&FormTargets {
@@ -83,13 +98,14 @@ pub fn fitted_form() -> Result<FittedForm> {
     })
 }
 
-/// Half-section contour at u (AP = 0, FP = 1) from the fitted curves.
-fn section_points(form: &FittedForm, u: f64) -> Result<Vec<[f64; 2]>> {
+/// The half-section below the design waterline at u (AP = 0, FP = 1) from the fitted curves; `None` at
+/// a stem or stern post (zero breadth).
+fn underwater_section(form: &FittedForm, u: f64) -> Result<Option<PowerSection>> {
     let beta = form.beta(u);
     let alpha = form.alpha(u);
     let b = 0.5 * BEAM * beta;
     if b < 1e-6 {
-        return Ok(vec![[0.0, 0.0], [0.0, DEPTH]]);
+        return Ok(None);
     }
     let sigma = alpha / beta;
     let smax = sigma_max(u);
@@ -101,11 +117,20 @@ fn section_points(form: &FittedForm, u: f64) -> Result<Vec<[f64; 2]>> {
     }
     // Only solver round-off is removed here (checked just above).
     let sigma = sigma.clamp(0.5, smax);
-    let lower = PowerSection {
-        half_breadth: b,
-        draft: DRAFT_MAX,
+    Ok(Some(PowerSection::with_flat(
+        b,
+        DRAFT_MAX,
         sigma,
+        flat_fraction(1.0 - u, sigma),
+    )))
+}
+
+/// Half-section contour at u (AP = 0, FP = 1) from the fitted curves.
+fn section_points(form: &FittedForm, u: f64) -> Result<Vec<[f64; 2]>> {
+    let Some(lower) = underwater_section(form, u)? else {
+        return Ok(vec![[0.0, 0.0], [0.0, DEPTH]]);
     };
+    let b = lower.half_breadth;
     // dy/dz of the side continued above the waterline: the chord slope over the top of the section.
     let span = FLARE_SLOPE_SPAN * DRAFT_MAX;
     let wl_slope = (b - lower.y(DRAFT_MAX - span)) / span;
@@ -161,6 +186,23 @@ pub fn ochi_vform() -> Result<HullSpec> {
         }
     }
 
+    let mut instrumented = Vec::new();
+    for &f in &SENSOR_STATIONS {
+        if let Some(sec) = underwater_section(&form, 1.0 - f)? {
+            instrumented.push(if sec.flat > 0.0 {
+                format!(
+                    "{f}: flat of bottom {:.3} m half-width, side rising at {:.1} deg from it",
+                    sec.flat,
+                    sec.keel_deadrise().to_degrees()
+                )
+            } else {
+                format!(
+                    "{f}: V, deadrise {:.1} deg at the keel",
+                    sec.keel_deadrise().to_degrees()
+                )
+            });
+        }
+    }
     let cb = form.cb();
     let cm = form.cm();
     let description = format!(
@@ -178,8 +220,12 @@ intervals) in x, chosen by a quadratic programme (Clarabel) that minimises their
 subject to the form coefficients as equality constraints (Cb, Cwp, Cm at midship, full beam at midship, \
 zero area and breadth at AP and FP) and section bounds 0.5 b T <= A/2 <= sigma_max b T at 401+ points, \
 sigma_max = 0.6 forward of 0.1 Lpp aft of FP (V-sections), rising linearly to Cm at 0.3 Lpp. Sections below \
-the waterline are y = b [1 - (1 - z/T)^q] with q = sigma/(1 - sigma) (sigma 0.5 = straight V, near 1 = \
-rectangle with small bilge); keel on the baseline from AP to FP, no forefoot or cutaway. Above the \
+the waterline are a flat of bottom of half-width y_f and a side y = y_f + (b - y_f) [1 - (1 - z/T)^q] with \
+q = s/(1 - s), s = (sigma - w)/(1 - w), w = y_f/b (without a flat: sigma 0.5 = straight V, near 1 = \
+rectangle with small bilge). No flat forward of {FLAT_START} Lpp aft of FP (V-sections); aft of it \
+w = L (2 sigma - 1), L rising linearly from 0 to {FLAT_FRACTION} over {FLAT_RAMP} Lpp: Veen (2010) calls the \
+instrumented section at 0.174 Lpp flat-bottomed (where the flat-of-bottom line ends is not published). \
+Keel on the baseline from AP to FP, no forefoot or cutaway. Above the \
 waterline the side continues as a straight line with the mean slope of the section over the top 10 % of the \
 draft (a V section continues its V, a full section stays nearly wall-sided), the deck half-breadth not \
 exceeding half the beam, up to an assumed deck at {DEPTH} m (depth not published).\n\
@@ -197,7 +243,9 @@ properties not published take conventional values: k_yy = 0.25 Lpp, LCG = LCB (l
 Sensors: the four instrumented sections (0.093, 0.133, 0.174, 0.227 Lpp aft of FP) and the 0.02 m sensor \
 diameter are published; the positions on each section are not, so four sensors per section are placed at \
 0.10, 0.35, 0.60 and 0.85 of the wetted girth at the test condition, from near the keel towards the \
-waterline (S093-1 nearest the keel). Ochi had 19 sensors in all; the other 3 are not modelled.",
+waterline (S093-1 nearest the keel). Ochi had 19 sensors in all; the other 3 are not modelled. The \
+instrumented sections here: {instrumented}.",
+        instrumented = instrumented.join("; "),
         cb_t = cb_target(),
         cp_t = cb_target() / CM,
         cp = cb / cm,
