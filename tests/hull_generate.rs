@@ -294,7 +294,8 @@ fn same_up_to_last_digit(committed: &str, generated: &str) -> Result<(), String>
                 x == y
                     || match (x.parse::<f64>(), y.parse::<f64>()) {
                         // One unit in the last written digit, with a margin for the decimal parse.
-                        (Ok(p), Ok(q)) => {
+                        // Integers (counts) must match exactly.
+                        (Ok(p), Ok(q)) if decimals(x) > 0 && decimals(y) > 0 => {
                             let last = 10f64.powi(-(decimals(x).max(decimals(y)) as i32));
                             (p - q).abs() <= 1.5 * last
                         }
@@ -358,4 +359,5 @@ fn comparison_catches_real_differences() {
     assert!(same_up_to_last_digit("Cb 0.7439,", "Cb 0.7449,").is_err());
     assert!(same_up_to_last_digit("name = \"a\"", "name = \"b\"").is_err());
     assert!(same_up_to_last_digit("x\ny", "x").is_err());
+    assert!(same_up_to_last_digit("45 stations", "46 stations").is_err());
 }
