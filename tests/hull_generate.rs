@@ -168,7 +168,7 @@ fn ochi_vform_test_condition_and_v_sections_forward() {
             "section at {f} Lpp aft of FP: sigma {sigma:.3}"
         );
     }
-    // Veen (2010): the sections at 0.093 and 0.133 Lpp are V-shaped, the one at 0.174 Lpp flat-bottomed.
+    // V-sections forward (a V-form); Veen (2010) calls the section at 0.174 Lpp flat-bottomed.
     for (f, flat) in [(0.093, false), (0.133, false), (0.174, true)] {
         let s = hull.section_at(hull.station_x(f)).unwrap();
         let p = s.points[1];

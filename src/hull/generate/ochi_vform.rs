@@ -24,11 +24,6 @@ pub const RHO: f64 = 1000.0;
 pub const CM: f64 = 0.99;
 /// Published waterplane coefficient.
 pub const CWP: f64 = 0.83;
-/// Published block and prismatic coefficients (two digits), checked against, not fitted: the fit uses
-/// C_B = Δ/(ρ L B T) = 0.7441 (consistent with the published displacement; rounds to the published 0.74)
-/// and C_P = C_B/C_M = 0.7516 (rounds to the published 0.75).
-pub const CB_PUBLISHED: f64 = 0.74;
-pub const CP_PUBLISHED: f64 = 0.75;
 /// Deck height above baseline, m: not published, assumed.
 pub const DEPTH: f64 = 0.5;
 /// Centre of gravity above baseline, m: not published, assumed (half the assumed depth).
@@ -52,7 +47,9 @@ pub const SIGMA_MAX_FORWARD: f64 = 0.6;
 /// of the draft.
 pub const FLARE_SLOPE_SPAN: f64 = 0.1;
 
-/// Block coefficient implied by the published displacement in fresh water.
+/// Block coefficient implied by the published displacement in fresh water, C_B = Δ/(ρ L B T) = 0.7441.
+/// The published C_B 0.74 and C_P 0.75 (two digits) are not fitted directly: this C_B rounds to 0.74 and,
+/// with C_M 0.99, gives C_P = C_B/C_M = 0.7516, which rounds to 0.75.
 pub fn cb_target() -> f64 {
     DISPLACEMENT_KG / (RHO * LPP * BEAM * DRAFT_MAX)
 }
@@ -72,8 +69,8 @@ fn sigma_max(u: f64) -> f64 {
 
 /// Flat of bottom: none forward of `FLAT_START` Lpp aft of the FP (V-sections), then the half-width
 /// fraction w = λ (2σ − 1) of the waterline half-breadth, λ rising linearly from 0 to `FLAT_FRACTION` over
-/// `FLAT_RAMP` Lpp. Veen (2010) describes the instrumented section at 0.174 Lpp as flat-bottomed and the
-/// ones forward of it as V-shaped; where the flat-of-bottom line meets the keel is not published.
+/// `FLAT_RAMP` Lpp. Veen (2010) describes the instrumented section at 0.174 Lpp as flat-bottomed; the model
+/// is a V-form; where the flat-of-bottom line ends forward is not published (0.14 is a choice).
 pub const FLAT_START: f64 = 0.14;
 pub const FLAT_RAMP: f64 = 0.03;
 pub const FLAT_FRACTION: f64 = 0.8;
