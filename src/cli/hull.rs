@@ -1,9 +1,11 @@
-//! `slamtool hull info|section`
+//! `slamtool hull info|section|generate`
 
 use std::path::PathBuf;
 
 use clap::{Args, Subcommand};
 use slamtool::hull::{Hull, Hydrostatics, MassProperties};
+
+use super::hull_generate;
 
 #[derive(Debug, Subcommand)]
 pub enum HullCommand {
@@ -11,6 +13,8 @@ pub enum HullCommand {
     Info(InfoArgs),
     /// The section contour at any station, relative to the baseline or to the local waterline (CSV).
     Section(SectionArgs),
+    /// Write one of the example/reference hulls (hulls/*.toml) from its generator.
+    Generate(hull_generate::GenerateArgs),
 }
 
 #[derive(Debug, Args)]
@@ -44,6 +48,7 @@ pub fn run(c: HullCommand) -> slamtool::Result<()> {
     match c {
         HullCommand::Info(a) => info(a),
         HullCommand::Section(a) => section(a),
+        HullCommand::Generate(a) => hull_generate::run(a),
     }
 }
 

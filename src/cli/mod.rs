@@ -6,6 +6,7 @@ use clap::{CommandFactory, Parser, Subcommand};
 
 mod completions;
 mod hull;
+mod hull_generate;
 mod sea;
 
 /// 2D+t ship-slamming design tool: strip theory, SPH water entry, analytic cross-checks, design reports.
