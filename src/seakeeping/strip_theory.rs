@@ -300,32 +300,42 @@ pub fn respond_with(model: &ShipModel, strips: &Strips, omega0: f64, speed: f64)
     }
 }
 
-/// Uncoupled natural periods at zero speed, T = 2 pi sqrt((M + A(w_n)) / C) with the added mass at the
-/// natural frequency itself (fixed-point iteration). Returns (heave, pitch) in seconds.
+/// Uncoupled natural periods at zero speed, T = 2 pi / w_n with w_n^2 (M + A(w_n)) = C, the added mass taken
+/// at the natural frequency itself (secant iteration on the residual). Returns (heave, pitch) in seconds.
 pub fn natural_periods(model: &ShipModel, settings: &StripSettings) -> Result<(f64, f64)> {
     let m = mass_matrix(model);
     let c = restoring(model);
     let mut out = [0.0; 2];
     for (j, o) in out.iter_mut().enumerate() {
-        let mut w = (c[j][j] / (2.0 * m[j][j])).sqrt();
-        let mut converged = false;
-        for _ in 0..60 {
+        let residual = |w: f64| -> Result<f64> {
             let s = strips(model, w, settings)?;
             let a = coefficients(model, &s, 0.0).added_mass[j][j];
-            let w_new = (c[j][j] / (m[j][j] + a)).sqrt();
-            if (w_new - w).abs() < 1e-7 * w {
-                w = w_new;
+            Ok(w * w * (m[j][j] + a) - c[j][j])
+        };
+        let mut w0 = (c[j][j] / (2.0 * m[j][j])).sqrt();
+        let mut w1 = (c[j][j] / m[j][j]).sqrt();
+        let (mut r0, mut r1) = (residual(w0)?, residual(w1)?);
+        let mut converged = false;
+        for _ in 0..40 {
+            if (r1 - r0).abs() < 1e-300 {
+                break;
+            }
+            let w2 = (w1 - r1 * (w1 - w0) / (r1 - r0)).max(0.2 * w1);
+            w0 = w1;
+            r0 = r1;
+            w1 = w2;
+            r1 = residual(w1)?;
+            if (w1 - w0).abs() < 1e-7 * w1 {
                 converged = true;
                 break;
             }
-            w = 0.5 * (w + w_new);
         }
-        if !converged || !w.is_finite() {
+        if !converged || !w1.is_finite() {
             return Err(Error::Numerical(
                 "natural-frequency iteration did not converge".into(),
             ));
         }
-        *o = 2.0 * std::f64::consts::PI / w;
+        *o = 2.0 * std::f64::consts::PI / w1;
     }
     Ok((out[0], out[1]))
 }

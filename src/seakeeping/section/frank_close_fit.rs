@@ -79,38 +79,66 @@ impl Panel {
     }
 }
 
-/// Cut the contour into about `n` panels, keeping every input vertex, panel count per segment proportional
-/// to its length, with cosine spacing inside each segment so panels shrink towards corners.
+/// Cut the contour into about `n` panels. Corners (direction change above 15 deg) and the end points are
+/// kept as panel ends; between them the panels are equally long along the contour, so dense input
+/// polylines are resampled and sparse ones subdivided. A corner-to-corner piece that is one straight
+/// segment gets cosine spacing (panels shrink towards its corners, where the flow is singular).
 fn panelise(points: &[[f64; 2]], n: usize) -> Vec<Panel> {
-    let lens: Vec<f64> = points
-        .windows(2)
-        .map(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]))
-        .collect();
-    let total: f64 = lens.iter().sum();
+    let seg_len = |a: [f64; 2], b: [f64; 2]| (b[0] - a[0]).hypot(b[1] - a[1]);
+    let mut cum = vec![0.0];
+    for w in points.windows(2) {
+        cum.push(cum[cum.len() - 1] + seg_len(w[0], w[1]));
+    }
+    let total = cum[cum.len() - 1];
+    let mut corners = vec![0];
+    for i in 1..points.len() - 1 {
+        let (a, b, c) = (points[i - 1], points[i], points[i + 1]);
+        let d1 = [b[0] - a[0], b[1] - a[1]];
+        let d2 = [c[0] - b[0], c[1] - b[1]];
+        let cross = d1[0] * d2[1] - d1[1] * d2[0];
+        let dot = d1[0] * d2[0] + d1[1] * d2[1];
+        if cross.atan2(dot).abs() > 15f64.to_radians() {
+            corners.push(i);
+        }
+    }
+    corners.push(points.len() - 1);
+    // point at arc length s within vertices [lo, hi]
+    let at = |s: f64, lo: usize, hi: usize| {
+        let mut k = lo;
+        while k + 1 < hi && cum[k + 1] < s {
+            k += 1;
+        }
+        let f = ((s - cum[k]) / (cum[k + 1] - cum[k])).clamp(0.0, 1.0);
+        let (a, b) = (points[k], points[k + 1]);
+        [a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1])]
+    };
     let mut panels = Vec::new();
-    for (w, l) in points.windows(2).zip(&lens) {
-        let m = ((n as f64 * l / total).round() as usize).max(1);
-        let cosine = m >= 4 && points.len() <= 4;
+    for w in corners.windows(2) {
+        let (lo, hi) = (w[0], w[1]);
+        let len = cum[hi] - cum[lo];
+        let m = ((n as f64 * len / total).round() as usize).max(1);
+        let cosine = hi == lo + 1 && m >= 4;
+        let s_of = |i: usize| {
+            let t = i as f64 / m as f64;
+            let t = if cosine {
+                0.5 * (1.0 - (std::f64::consts::PI * t).cos())
+            } else {
+                t
+            };
+            cum[lo] + t * len
+        };
         for k in 0..m {
-            let f = |i: usize| {
-                let s = i as f64 / m as f64;
-                if cosine {
-                    0.5 * (1.0 - (std::f64::consts::PI * s).cos())
-                } else {
-                    s
-                }
+            let a = if k == 0 {
+                points[lo]
+            } else {
+                at(s_of(k), lo, hi)
             };
-            let (s0, s1) = (f(k), f(k + 1));
-            let at = |s: f64| {
-                [
-                    w[0][0] + s * (w[1][0] - w[0][0]),
-                    w[0][1] + s * (w[1][1] - w[0][1]),
-                ]
+            let b = if k + 1 == m {
+                points[hi]
+            } else {
+                at(s_of(k + 1), lo, hi)
             };
-            panels.push(Panel {
-                a: at(s0),
-                b: at(s1),
-            });
+            panels.push(Panel { a, b });
         }
     }
     panels
