@@ -7,6 +7,7 @@ use clap::{CommandFactory, Parser, Subcommand};
 mod completions;
 mod hull;
 mod hull_generate;
+mod motions;
 mod sea;
 
 /// 2D+t ship-slamming design tool: strip theory, SPH water entry, analytic cross-checks, design reports.
@@ -25,6 +26,8 @@ enum Command {
     /// Sea states: regular waves, spectra, speeds.
     #[command(subcommand)]
     Sea(sea::SeaCommand),
+    /// Strip-theory motions, relative motion at the bow, slam statistics and operability.
+    Motions(motions::MotionsArgs),
     /// Print a shell completion script.
     Completions(completions::CompletionsArgs),
     /// Print the manual page (roff) on stdout.
@@ -36,6 +39,7 @@ pub fn main() -> ExitCode {
     let result = match cli.command {
         Command::Hull(c) => hull::run(c),
         Command::Sea(c) => sea::run(c),
+        Command::Motions(a) => motions::run(a),
         Command::Completions(a) => completions::run(a, &mut Cli::command()),
         Command::Man => completions::man(&Cli::command()),
     };

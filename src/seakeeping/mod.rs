@@ -8,6 +8,7 @@
 //! The core works on its own input type [`ShipModel`] (stations with wetted half sections in the waterline
 //! frame); [`ShipModel::from_hull`] builds one from a `hull::Hull` and a loading condition.
 
+pub mod analysis;
 mod from_hull;
 pub mod rao;
 pub mod relative_motion;

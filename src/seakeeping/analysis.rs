@@ -1,0 +1,250 @@
+//! One seakeeping analysis of a ship in a sea-state file: natural periods, RAOs per speed, relative motion
+//! and keel entry in the regular waves, Ochi slam statistics in the irregular seas and the operability
+//! limit. This is what `slamtool motions` prints; the CLI only formats it.
+
+use serde::Serialize;
+
+use super::ShipModel;
+use super::rao::{self, RaoRow};
+use super::relative_motion::{self, KeelEntry};
+use super::section::{HalfSection, SectionMethod};
+use super::slamming::{self, Operability, SampledSpectrum, SlamStatistics};
+use super::strip_theory::{self, StripSettings};
+use crate::error::{Error, Result};
+use crate::sea::{IrregularSea, RegularWave};
+
+/// A station where relative motion and slamming are evaluated.
+#[derive(Debug, Clone, Serialize)]
+pub struct Station {
+    pub aft_of_fp: f64,
+    pub x: f64,
+    /// Keel depth below the local calm waterline (m).
+    pub draft: f64,
+    /// Keel-to-deck height of the section (m): the entry profile stops at this depth.
+    pub height: f64,
+}
+
+impl Station {
+    /// A station from its wetted half section (waterline frame) and the keel-to-deck height.
+    pub fn new(lpp: f64, aft_of_fp: f64, wetted: &HalfSection, height: f64) -> Self {
+        Self {
+            aft_of_fp,
+            x: 0.5 * lpp - aft_of_fp * lpp,
+            draft: wetted.draft(),
+            height,
+        }
+    }
+}
+
+/// What to compute.
+#[derive(Debug, Clone)]
+pub struct Request {
+    pub speeds: Vec<f64>,
+    pub lambda_over_l: Vec<f64>,
+    pub regular: Vec<RegularWave>,
+    pub irregular: Vec<IrregularSea>,
+    pub stations: Vec<Station>,
+    pub swell_up: f64,
+    pub slam_probability_limit: f64,
+    pub method: SectionMethod,
+    /// Samples per spectrum for the irregular-sea statistics.
+    pub spectrum_samples: usize,
+    /// Samples per keel-entry velocity profile.
+    pub profile_samples: usize,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct RegularResult {
+    pub wave: String,
+    pub height_m: f64,
+    pub omega0: f64,
+    pub omega_e: f64,
+    pub heave_m: f64,
+    pub pitch_deg: f64,
+    pub stations: Vec<RegularStation>,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct RegularStation {
+    pub aft_of_fp: f64,
+    pub x: f64,
+    pub draft: f64,
+    /// Relative motion amplitude (m) in this wave.
+    pub relative_motion_m: f64,
+    /// Relative velocity amplitude (m/s) in this wave.
+    pub relative_velocity_m_s: f64,
+    pub keel_entry: Option<KeelEntry>,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct IrregularResult {
+    pub sea: String,
+    pub hs_m: f64,
+    pub tp_s: f64,
+    /// Exposure for the extreme values (h): the file's duration, or 1 h.
+    pub duration_h: f64,
+    pub stations: Vec<SlamStatistics>,
+    /// Most probable largest entry velocity in the expected number of slams over the duration (m/s).
+    pub extreme_velocity_m_s: Vec<Option<f64>>,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct SpeedResult {
+    pub speed_m_s: f64,
+    pub froude_number: f64,
+    pub raos: Vec<RaoRow>,
+    pub regular: Vec<RegularResult>,
+    pub irregular: Vec<IrregularResult>,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct OperabilityResult {
+    pub sea: String,
+    pub operability: Operability,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct Report {
+    pub method: SectionMethod,
+    pub strip_stations: usize,
+    pub lpp_m: f64,
+    pub mass_kg: f64,
+    pub heave_natural_period_s: f64,
+    pub pitch_natural_period_s: f64,
+    pub slam_threshold_velocity_m_s: f64,
+    pub limitation: &'static str,
+    pub speeds: Vec<SpeedResult>,
+    pub operability: Vec<OperabilityResult>,
+}
+
+/// The known limitation every report states.
+pub const PITCH_DAMPING_NOTE: &str = "strip theory over-predicts pitch damping at forward speed \
+(Journee 1992, Wigley hulls): pitch near resonance at speed is under-predicted";
+
+/// Run the analysis.
+pub fn run(model: &ShipModel, req: &Request) -> Result<Report> {
+    model.validate()?;
+    if req.speeds.is_empty() {
+        return Err(Error::Invalid("no speeds to analyse".into()));
+    }
+    let settings = StripSettings {
+        method: req.method,
+        ..StripSettings::default()
+    };
+    let (th, tp) = strip_theory::natural_periods(model, &settings)?;
+    let mut speeds = Vec::new();
+    for &u in &req.speeds {
+        let omegas: Vec<f64> = req
+            .lambda_over_l
+            .iter()
+            .map(|&r| rao::omega_of_lambda_over_l(r, model.lpp, model.g))
+            .collect();
+        let raos = rao::responses(model, u, &omegas, &settings)?
+            .iter()
+            .map(|r| RaoRow::from_response(r, model.lpp))
+            .collect();
+        let mut regular = Vec::new();
+        for w in &req.regular {
+            let r = strip_theory::respond(model, w.omega, u, &settings)?;
+            let za = w.amplitude();
+            let mut st = Vec::new();
+            for s in &req.stations {
+                let rm = relative_motion::at_station(&r, s.x, req.swell_up)?;
+                st.push(RegularStation {
+                    aft_of_fp: s.aft_of_fp,
+                    x: s.x,
+                    draft: s.draft,
+                    relative_motion_m: rm.motion.norm() * za,
+                    relative_velocity_m_s: rm.velocity.norm() * za,
+                    keel_entry: relative_motion::keel_entry(
+                        &rm,
+                        r.omega_e,
+                        za,
+                        s.draft,
+                        s.height,
+                        req.profile_samples,
+                    ),
+                });
+            }
+            regular.push(RegularResult {
+                wave: w.name.clone(),
+                height_m: w.height_m,
+                omega0: w.omega,
+                omega_e: r.omega_e,
+                heave_m: r.heave.norm() * za,
+                pitch_deg: (r.pitch.norm() * za).to_degrees(),
+                stations: st,
+            });
+        }
+        let mut irregular = Vec::new();
+        for sea in &req.irregular {
+            let wp = sea.spectrum.peak_frequency();
+            let spec = SampledSpectrum::from_fn(
+                |w| sea.spectrum.density(w),
+                0.4 * wp,
+                3.5 * wp,
+                req.spectrum_samples,
+            )?;
+            let pts: Vec<(f64, f64)> = req.stations.iter().map(|s| (s.x, s.draft)).collect();
+            let stats = slamming::statistics(model, &spec, u, &pts, req.swell_up, &settings)?;
+            let duration_h = sea.duration_h.unwrap_or(1.0);
+            let extreme = stats
+                .iter()
+                .map(|s| {
+                    let n = s.slams_per_hour * duration_h;
+                    (n >= 1.0).then(|| s.most_probable_extreme_velocity(n))
+                })
+                .collect();
+            irregular.push(IrregularResult {
+                sea: sea.name.clone(),
+                hs_m: sea.spectrum.hs(),
+                tp_s: sea.spectrum.peak_period(),
+                duration_h,
+                stations: stats,
+                extreme_velocity_m_s: extreme,
+            });
+        }
+        speeds.push(SpeedResult {
+            speed_m_s: u,
+            froude_number: u / (model.g * model.lpp).sqrt(),
+            raos,
+            regular,
+            irregular,
+        });
+    }
+    let mut operability = Vec::new();
+    if req.speeds.windows(2).all(|w| w[1] > w[0]) {
+        for (i, sea) in req.irregular.iter().enumerate() {
+            let p: Vec<f64> = speeds
+                .iter()
+                .map(|s| {
+                    s.irregular[i]
+                        .stations
+                        .iter()
+                        .map(|t| t.probability)
+                        .fold(0.0, f64::max)
+                })
+                .collect();
+            operability.push(OperabilityResult {
+                sea: sea.name.clone(),
+                operability: slamming::operability_limit(
+                    &req.speeds,
+                    &p,
+                    req.slam_probability_limit,
+                )?,
+            });
+        }
+    }
+    Ok(Report {
+        method: req.method,
+        strip_stations: model.stations.len(),
+        lpp_m: model.lpp,
+        mass_kg: model.mass,
+        heave_natural_period_s: th,
+        pitch_natural_period_s: tp,
+        slam_threshold_velocity_m_s: slamming::threshold_velocity(model.g, model.lpp),
+        limitation: PITCH_DAMPING_NOTE,
+        speeds,
+        operability,
+    })
+}
