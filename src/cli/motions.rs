@@ -57,6 +57,9 @@ pub struct MotionsArgs {
     /// Operability limit on the slam probability per encounter.
     #[arg(long, default_value_t = DEFAULT_SLAM_PROBABILITY_LIMIT)]
     slam_limit: f64,
+    /// Frequencies sampled per wave spectrum for the slam statistics.
+    #[arg(long, default_value_t = 30)]
+    spectrum_samples: usize,
     /// Print JSON instead of tables.
     #[arg(long)]
     json: bool,
@@ -138,7 +141,7 @@ pub fn run(a: MotionsArgs) -> Result<()> {
         swell_up: a.swell_up,
         slam_probability_limit: a.slam_limit,
         method,
-        spectrum_samples: 30,
+        spectrum_samples: a.spectrum_samples.max(3),
         profile_samples: 41,
     };
     let report = analysis::run(&model, &req)?;
@@ -273,6 +276,9 @@ fn csv_text(prov: &Provenance, header: &[&str], rows: Vec<Vec<String>>) -> Resul
     Ok(prov.csv_header() + &String::from_utf8_lossy(&body))
 }
 
+/// File name, header and rows of one CSV output.
+type CsvFile<'a> = (&'a str, &'a [&'a str], Vec<Vec<String>>);
+
 fn write_csv(dir: &Path, r: &Report, prov: &Provenance) -> Result<()> {
     let f = |v: f64| format!("{v:.6e}");
     let mut raos = Vec::new();
@@ -361,7 +367,7 @@ fn write_csv(dir: &Path, r: &Report, prov: &Provenance) -> Result<()> {
             ]);
         }
     }
-    let files: [(&str, &[&str], Vec<Vec<String>>); 5] = [
+    let files: [CsvFile; 5] = [
         (
             "raos.csv",
             &[
