@@ -22,7 +22,7 @@ fn arr(t: &toml::Table, table: &str, key: &str) -> Vec<f64> {
         .as_array()
         .unwrap()
         .iter()
-        .map(|v| v.as_float().unwrap())
+        .map(|v| v.as_float().or_else(|| v.as_integer().map(|i| i as f64)).unwrap())
         .collect()
 }
 
@@ -239,11 +239,75 @@ fn wigley3_pitch_damping_at_speed_known_overprediction() {
     let scale = (m.lpp / G).sqrt();
     let s = strip_theory::strips(&m, wn / scale, &StripSettings::default()).unwrap();
     let mut last = 0.0;
-    for (f, meas) in arr(&r, "pitch_damping_measured", "fn").iter().zip(arr(&r, "pitch_damping_measured", "b55_nd")) {
+    for (f, meas) in arr(&r, "pitch_damping_measured", "fn").iter().zip(arr(
+        &r,
+        "pitch_damping_measured",
+        "b55_nd",
+    )) {
         let u = f * (G * m.lpp).sqrt();
-        let b55 = strip_theory::coefficients(&m, &s, u).damping[1][1] / (m.rho * m.volume() * m.lpp * m.lpp) * scale;
-        println!("B55'' at w' {wn}, Fn {f}: strip theory {b55:.4}, measured {meas:.4} ({:+.0} %)", 100.0 * (b55 / meas - 1.0));
+        let b55 = strip_theory::coefficients(&m, &s, u).damping[1][1]
+            / (m.rho * m.volume() * m.lpp * m.lpp)
+            * scale;
+        println!(
+            "B55'' at w' {wn}, Fn {f}: strip theory {b55:.4}, measured {meas:.4} ({:+.0} %)",
+            100.0 * (b55 / meas - 1.0)
+        );
         assert!(b55 > last, "B55 must grow with speed in STF");
         last = b55;
     }
+}
+
+/// Phases at zero speed, lambda/L >= 1 (leads relative to the wave crest amidships, as Journee prints them;
+/// his pitch phases 258-264 deg are read modulo 360). This checks the sign conventions (heave up, pitch bow
+/// down, wave e^{i(w t + k x)}). The 15 deg tolerance is ours (no published one), chosen after a first run
+/// gave differences of at most 9 deg.
+#[test]
+fn wigley3_zero_speed_phases() {
+    let m = wigley3(41);
+    let r = reference();
+    let wrap = |d: f64| (d + 180.0).rem_euclid(360.0) - 180.0;
+    let mut ok = true;
+    for ((lr, hp), pp) in arr(&r, "zero_speed", "lambda_over_l")
+        .iter()
+        .zip(arr(&r, "zero_speed", "heave_phase_deg"))
+        .zip(arr(&r, "zero_speed", "pitch_phase_deg"))
+    {
+        if *lr < 1.0 {
+            continue;
+        }
+        let resp = strip_theory::respond(&m, omega0_of(*lr, m.lpp), 0.0, &StripSettings::default())
+            .unwrap();
+        let dh = wrap(resp.heave.arg().to_degrees() - hp);
+        let dp = wrap(resp.pitch.arg().to_degrees() - pp);
+        println!("lambda/L {lr}: heave phase diff {dh:+.1} deg, pitch phase diff {dp:+.1} deg");
+        ok &= dh.abs() < 15.0 && dp.abs() < 15.0;
+    }
+    assert!(ok, "phases outside 15 deg");
+}
+
+/// The Lewis method gives the Fn 0.3 heave RAO within the same 15 % (Wigley sections are close to Lewis forms).
+#[test]
+fn wigley3_heave_rao_fn030_lewis() {
+    let m = wigley3(41);
+    let r = reference();
+    let u = 0.3 * (G * m.lpp).sqrt();
+    let s = StripSettings {
+        method: slamtool::seakeeping::section::SectionMethod::Lewis,
+        ..StripSettings::default()
+    };
+    let mut ok = true;
+    for (lr, h) in
+        arr(&r, "heave_rao_fn030", "lambda_over_l")
+            .iter()
+            .zip(arr(&r, "heave_rao_fn030", "heave"))
+    {
+        let resp = strip_theory::respond(&m, omega0_of(*lr, m.lpp), u, &s).unwrap();
+        ok &= within(
+            &format!("Lewis heave RAO Fn 0.3 lambda/L {lr}"),
+            resp.heave.norm(),
+            h,
+            0.15,
+        );
+    }
+    assert!(ok);
 }
