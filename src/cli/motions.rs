@@ -143,8 +143,14 @@ pub fn run(a: MotionsArgs) -> Result<()> {
         method,
         spectrum_samples: a.spectrum_samples.max(3),
         profile_samples: 41,
+        water_depth: sea.water_depth_m,
     };
     let report = analysis::run(&model, &req)?;
+    if a.json {
+        for w in &report.warnings {
+            eprintln!("warning: {w}");
+        }
+    }
     let settings = serde_json::json!({
         "loading": loading.name, "method": format!("{:?}", method), "strip_stations": a.stations,
         "swell_up": a.swell_up, "slam_limit": a.slam_limit, "lambda_over_l": a.lambda_over_l,
@@ -180,6 +186,9 @@ fn print_tables(hull: &str, loading: &str, r: &Report) {
         r.slam_threshold_velocity_m_s
     );
     println!("note: {}", r.limitation);
+    for w in &r.warnings {
+        println!("WARNING: {w}");
+    }
     for s in &r.speeds {
         println!(
             "\n== U = {:.3} m/s (Fn {:.3})",

@@ -51,6 +51,9 @@ pub struct Request {
     pub spectrum_samples: usize,
     /// Samples per keel-entry velocity profile.
     pub profile_samples: usize,
+    /// Water depth if the sea file gives one (the theory here is for deep water: a warning is issued where
+    /// the depth is below half a wavelength of the waves analysed).
+    pub water_depth: Option<f64>,
 }
 
 #[derive(Debug, Clone, Serialize)]
@@ -113,6 +116,8 @@ pub struct Report {
     pub pitch_natural_period_s: f64,
     pub slam_threshold_velocity_m_s: f64,
     pub limitation: &'static str,
+    /// Conditions outside the range of validity of the method.
+    pub warnings: Vec<String>,
     pub speeds: Vec<SpeedResult>,
     pub operability: Vec<OperabilityResult>,
 }
@@ -131,6 +136,28 @@ pub fn run(model: &ShipModel, req: &Request) -> Result<Report> {
         method: req.method,
         ..StripSettings::default()
     };
+    let mut warnings = Vec::new();
+    let fn_max = req.speeds.iter().fold(0.0f64, |a, &u| a.max(u)) / (model.g * model.lpp).sqrt();
+    if fn_max > 0.4 {
+        warnings.push(format!(
+            "Froude number up to {fn_max:.2}: strip theory is a low-to-moderate-speed theory (Fn <= 0.4); \
+             check that speeds and hull are at the same scale"
+        ));
+    }
+    if let Some(d) = req.water_depth {
+        let longest = req
+            .lambda_over_l
+            .iter()
+            .map(|r| r * model.lpp)
+            .chain(req.regular.iter().map(|w| w.wavelength_m))
+            .fold(0.0f64, f64::max);
+        if d < 0.5 * longest {
+            warnings.push(format!(
+                "water depth {d} m is below half the longest wavelength analysed ({longest:.2} m): \
+                 the deep-water theory used here over-predicts the wave length and under-predicts the motions"
+            ));
+        }
+    }
     let (th, tp) = strip_theory::natural_periods(model, &settings)?;
     let mut speeds = Vec::new();
     for &u in &req.speeds {
@@ -244,6 +271,7 @@ pub fn run(model: &ShipModel, req: &Request) -> Result<Report> {
         pitch_natural_period_s: tp,
         slam_threshold_velocity_m_s: slamming::threshold_velocity(model.g, model.lpp),
         limitation: PITCH_DAMPING_NOTE,
+        warnings,
         speeds,
         operability,
     })
