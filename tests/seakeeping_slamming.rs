@@ -192,3 +192,21 @@ fn slam_probability_grows_with_speed_and_sea_severity() {
     assert!(rough.probability > fast.probability);
     assert!(rough.slams_per_hour > fast.slams_per_hour);
 }
+
+#[test]
+fn response_spectrum_moments_equal_the_statistics() {
+    let m = wigley3(21);
+    let sp =
+        SampledSpectrum::from_fn(|w| 0.001 * (-(w - 4.5f64).powi(2)).exp(), 2.0, 8.0, 12).unwrap();
+    let u = 1.0;
+    let rs = slamming::response_spectra(&m, &sp, u, &[1.2], 1.0, &coarse()).unwrap();
+    let st = slamming::statistics(&m, &sp, u, &[(1.2, 0.1875)], 1.0, &coarse()).unwrap();
+    let (m0, m2) = rs[0].moments(G);
+    assert!((m0 - st[0].m0).abs() < 1e-15 && (m2 - st[0].m2).abs() < 1e-15);
+    // encounter frequencies follow w_e = w0 + w0^2 U / g; integrating over w_e gives about the same m0
+    for (w0, we) in rs[0].omega0.iter().zip(&rs[0].omega_e) {
+        assert!((we - (w0 + w0 * w0 * u / G)).abs() < 1e-12);
+    }
+    let m0_e = slamtool::numerics::quadrature::trapezoid(&rs[0].omega_e, &rs[0].motion);
+    assert!((m0_e / m0 - 1.0).abs() < 0.05, "{m0_e} vs {m0}");
+}

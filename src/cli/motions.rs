@@ -63,7 +63,8 @@ pub struct MotionsArgs {
     /// Print JSON instead of tables.
     #[arg(long)]
     json: bool,
-    /// Write CSV plot data (raos, relative motion, entry profiles, slam statistics, operability) here.
+    /// Write CSV plot data (RAOs, relative motion, entry profiles, response spectra, slam statistics,
+    /// operability) here.
     #[arg(short, long)]
     output: Option<PathBuf>,
 }
@@ -294,6 +295,7 @@ fn write_csv(dir: &Path, r: &Report, prov: &Provenance) -> Result<()> {
     let mut rel = Vec::new();
     let mut prof = Vec::new();
     let mut slam = Vec::new();
+    let mut spec = Vec::new();
     for s in &r.speeds {
         for q in &s.raos {
             raos.push(vec![
@@ -343,6 +345,19 @@ fn write_csv(dir: &Path, r: &Report, prov: &Provenance) -> Result<()> {
             }
         }
         for ir in &s.irregular {
+            for rs in &ir.response_spectra {
+                for j in 0..rs.omega0.len() {
+                    spec.push(vec![
+                        ir.sea.clone(),
+                        f(s.speed_m_s),
+                        f(rs.x),
+                        f(rs.omega0[j]),
+                        f(rs.omega_e[j]),
+                        f(rs.motion[j]),
+                        f(rs.velocity[j]),
+                    ]);
+                }
+            }
             for (t, e) in ir.stations.iter().zip(&ir.extreme_velocity_m_s) {
                 slam.push(vec![
                     ir.sea.clone(),
@@ -376,7 +391,7 @@ fn write_csv(dir: &Path, r: &Report, prov: &Provenance) -> Result<()> {
             ]);
         }
     }
-    let files: [CsvFile; 5] = [
+    let files: [CsvFile; 6] = [
         (
             "raos.csv",
             &[
@@ -435,6 +450,19 @@ fn write_csv(dir: &Path, r: &Report, prov: &Provenance) -> Result<()> {
                 "extreme_velocity_m_s",
             ],
             slam,
+        ),
+        (
+            "response_spectra.csv",
+            &[
+                "sea",
+                "speed_m_s",
+                "x_m",
+                "omega0",
+                "omega_e",
+                "relative_motion_m2_s",
+                "relative_velocity_m2_per_s",
+            ],
+            spec,
         ),
         (
             "operability.csv",

@@ -8,7 +8,7 @@ use super::ShipModel;
 use super::rao::{self, RaoRow};
 use super::relative_motion::{self, KeelEntry};
 use super::section::{HalfSection, SectionMethod};
-use super::slamming::{self, Operability, SampledSpectrum, SlamStatistics};
+use super::slamming::{self, Operability, ResponseSpectrum, SampledSpectrum, SlamStatistics};
 use super::strip_theory::{self, StripSettings};
 use crate::error::{Error, Result};
 use crate::sea::{IrregularSea, RegularWave};
@@ -89,6 +89,8 @@ pub struct IrregularResult {
     pub stations: Vec<SlamStatistics>,
     /// Most probable largest entry velocity in the expected number of slams over the duration (m/s).
     pub extreme_velocity_m_s: Vec<Option<f64>>,
+    /// Relative motion and velocity spectra at the stations (plot data).
+    pub response_spectra: Vec<ResponseSpectrum>,
 }
 
 #[derive(Debug, Clone, Serialize)]
@@ -213,7 +215,10 @@ pub fn run(model: &ShipModel, req: &Request) -> Result<Report> {
                 req.spectrum_samples,
             )?;
             let pts: Vec<(f64, f64)> = req.stations.iter().map(|s| (s.x, s.draft)).collect();
-            let stats = slamming::statistics(model, &spec, u, &pts, req.swell_up, &settings)?;
+            let xs: Vec<f64> = pts.iter().map(|p| p.0).collect();
+            let spectra =
+                slamming::response_spectra(model, &spec, u, &xs, req.swell_up, &settings)?;
+            let stats = slamming::statistics_from_spectra(model, &spectra, &pts);
             let duration_h = sea.duration_h.unwrap_or(1.0);
             let extreme = stats
                 .iter()
@@ -229,6 +234,7 @@ pub fn run(model: &ShipModel, req: &Request) -> Result<Report> {
                 duration_h,
                 stations: stats,
                 extreme_velocity_m_s: extreme,
+                response_spectra: spectra,
             });
         }
         speeds.push(SpeedResult {

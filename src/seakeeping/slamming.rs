@@ -112,6 +112,72 @@ pub fn ochi(x: f64, speed: f64, draft: f64, m0: f64, m2: f64, v_th: f64) -> Slam
     }
 }
 
+/// Response spectra of relative motion and velocity at one station, on the encounter frequencies of the
+/// sampled wave spectrum: S_s(w_e) = |s(w0)|^2 S(w0) / (dw_e/dw0), dw_e/dw0 = 1 + 2 w0 U / g (head seas).
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct ResponseSpectrum {
+    pub x: f64,
+    pub speed: f64,
+    pub omega0: Vec<f64>,
+    pub omega_e: Vec<f64>,
+    /// Relative motion spectral density per unit encounter frequency (m^2 s).
+    pub motion: Vec<f64>,
+    /// Relative velocity spectral density per unit encounter frequency (m^2/s).
+    pub velocity: Vec<f64>,
+}
+
+impl ResponseSpectrum {
+    /// (m0, m2): variances of relative motion and relative velocity. Integrated over w0 (same value as over
+    /// w_e, without the Jacobian's discretisation error).
+    pub fn moments(&self, g: f64) -> (f64, f64) {
+        let jac: Vec<f64> = self
+            .omega0
+            .iter()
+            .map(|w| 1.0 + 2.0 * w * self.speed / g)
+            .collect();
+        let s: Vec<f64> = self.motion.iter().zip(&jac).map(|(a, j)| a * j).collect();
+        let v: Vec<f64> = self.velocity.iter().zip(&jac).map(|(a, j)| a * j).collect();
+        (
+            crate::numerics::quadrature::trapezoid(&self.omega0, &s),
+            crate::numerics::quadrature::trapezoid(&self.omega0, &v),
+        )
+    }
+}
+
+/// Response spectra at stations `xs` for one speed in a sampled head-sea spectrum.
+pub fn response_spectra(
+    model: &ShipModel,
+    spectrum: &SampledSpectrum,
+    speed: f64,
+    xs: &[f64],
+    swell_up: f64,
+    settings: &StripSettings,
+) -> Result<Vec<ResponseSpectrum>> {
+    let n = spectrum.omega.len();
+    let mut out: Vec<ResponseSpectrum> = xs
+        .iter()
+        .map(|&x| ResponseSpectrum {
+            x,
+            speed,
+            omega0: spectrum.omega.clone(),
+            omega_e: vec![0.0; n],
+            motion: vec![0.0; n],
+            velocity: vec![0.0; n],
+        })
+        .collect();
+    for (j, &w0) in spectrum.omega.iter().enumerate() {
+        let r = strip_theory::respond(model, w0, speed, settings)?;
+        let jac = 1.0 + 2.0 * w0 * speed / model.g;
+        for rs in out.iter_mut() {
+            let rm = relative_motion::at_station(&r, rs.x, swell_up)?;
+            rs.omega_e[j] = r.omega_e;
+            rs.motion[j] = rm.motion.norm_sqr() * spectrum.density[j] / jac;
+            rs.velocity[j] = rm.velocity.norm_sqr() * spectrum.density[j] / jac;
+        }
+    }
+    Ok(out)
+}
+
 /// Slam statistics at the given stations (x, local draft) for one speed in a sampled head-sea spectrum.
 pub fn statistics(
     model: &ShipModel,
@@ -121,26 +187,26 @@ pub fn statistics(
     swell_up: f64,
     settings: &StripSettings,
 ) -> Result<Vec<SlamStatistics>> {
-    let mut s2 = vec![vec![0.0; spectrum.omega.len()]; stations.len()];
-    let mut v2 = s2.clone();
-    for (j, &w0) in spectrum.omega.iter().enumerate() {
-        let r = strip_theory::respond(model, w0, speed, settings)?;
-        for (i, &(x, _)) in stations.iter().enumerate() {
-            let rm = relative_motion::at_station(&r, x, swell_up)?;
-            s2[i][j] = rm.motion.norm_sqr() * spectrum.density[j];
-            v2[i][j] = rm.velocity.norm_sqr() * spectrum.density[j];
-        }
-    }
+    let xs: Vec<f64> = stations.iter().map(|s| s.0).collect();
+    let spectra = response_spectra(model, spectrum, speed, &xs, swell_up, settings)?;
+    Ok(statistics_from_spectra(model, &spectra, stations))
+}
+
+/// Ochi statistics from response spectra computed by [`response_spectra`] for the same stations.
+pub fn statistics_from_spectra(
+    model: &ShipModel,
+    spectra: &[ResponseSpectrum],
+    stations: &[(f64, f64)],
+) -> Vec<SlamStatistics> {
     let v_th = threshold_velocity(model.g, model.lpp);
-    Ok(stations
+    spectra
         .iter()
-        .enumerate()
-        .map(|(i, &(x, draft))| {
-            let m0 = crate::numerics::quadrature::trapezoid(&spectrum.omega, &s2[i]);
-            let m2 = crate::numerics::quadrature::trapezoid(&spectrum.omega, &v2[i]);
-            ochi(x, speed, draft, m0, m2, v_th)
+        .zip(stations)
+        .map(|(rs, &(x, draft))| {
+            let (m0, m2) = rs.moments(model.g);
+            ochi(x, rs.speed, draft, m0, m2, v_th)
         })
-        .collect())
+        .collect()
 }
 
 /// Operability: slam probability (highest over the stations) per speed and the speed limit.
