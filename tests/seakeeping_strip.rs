@@ -92,3 +92,18 @@ fn bad_model_and_frequency_are_errors() {
     m.stations.swap(0, 1);
     assert!(m.validate().is_err());
 }
+
+#[test]
+fn results_do_not_depend_on_the_thread_count() {
+    let m = barge(true);
+    let run = |threads: usize| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+            .install(|| strip_theory::respond(&m, 0.9, 2.5, &StripSettings::default()).unwrap())
+    };
+    let (a, b) = (run(1), run(3));
+    assert_eq!(a.heave, b.heave);
+    assert_eq!(a.pitch, b.pitch);
+}

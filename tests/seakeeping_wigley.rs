@@ -22,7 +22,11 @@ fn arr(t: &toml::Table, table: &str, key: &str) -> Vec<f64> {
         .as_array()
         .unwrap()
         .iter()
-        .map(|v| v.as_float().or_else(|| v.as_integer().map(|i| i as f64)).unwrap())
+        .map(|v| {
+            v.as_float()
+                .or_else(|| v.as_integer().map(|i| i as f64))
+                .unwrap()
+        })
         .collect()
 }
 
