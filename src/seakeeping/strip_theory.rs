@@ -73,6 +73,7 @@ pub struct Strips {
 /// Solve the 2D problems of all stations at encounter frequency `omega_e` (in parallel; the result is
 /// independent of the thread count since each station is solved on its own).
 pub fn strips(model: &ShipModel, omega_e: f64, settings: &StripSettings) -> Result<Strips> {
+    model.validate()?;
     let radiation: Result<Vec<Option<Radiation>>> = model
         .stations
         .par_iter()
