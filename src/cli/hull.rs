@@ -34,10 +34,15 @@ pub struct SectionArgs {
     /// Hull file (hull.toml).
     file: PathBuf,
     /// Station as a fraction of Lpp aft of the forward perpendicular.
-    #[arg(long, conflicts_with = "x_m", required_unless_present = "x_m")]
+    #[arg(
+        long,
+        conflicts_with = "x_m",
+        required_unless_present = "x_m",
+        allow_negative_numbers = true
+    )]
     aft_of_fp: Option<f64>,
-    /// Station as x in m from midship (positive forward).
-    #[arg(long)]
+    /// Station as x in m from midship (positive forward; aft of midship is negative, e.g. --x-m -1.2).
+    #[arg(long, allow_negative_numbers = true)]
     x_m: Option<f64>,
     /// Give z relative to the local waterline of this loading condition (default: above baseline).
     #[arg(long)]
@@ -203,17 +208,19 @@ fn row(label: &str, value: &str) {
 
 fn section(a: SectionArgs) -> slamtool::Result<()> {
     let hull = Hull::from_file(&a.file)?;
-    let x = match (a.x_m, a.aft_of_fp) {
-        (Some(x), _) => x,
-        (None, Some(f)) => hull.station_x(f),
+    let (x, given) = match (a.x_m, a.aft_of_fp) {
+        (Some(x), _) => (x, format!("--x-m {x}")),
+        (None, Some(f)) => (hull.station_x(f), format!("--aft-of-fp {f}")),
         (None, None) => unreachable!("clap requires one of them"),
     };
     if !x.is_finite() {
         return Err(slamtool::Error::Invalid(format!(
-            "station x = {x} is not a number"
+            "{given}: the station must be a finite number"
         )));
     }
-    let sec = hull.section_at(x)?;
+    let sec = hull
+        .section_at(x)
+        .map_err(|e| slamtool::Error::Invalid(format!("{given}: {e}")))?;
     let (sec, frame) = match &a.loading {
         Some(n) => {
             let l = hull.loading(Some(n))?;
@@ -226,13 +233,15 @@ fn section(a: SectionArgs) -> slamtool::Result<()> {
         None => (sec, "z above baseline".to_string()),
     };
     println!(
-        "# {} at x = {x:.4} m ({:.4} Lpp aft of FP); {frame}",
+        "# {} at x = {:.4} m ({:.4} Lpp aft of FP); {frame}",
         hull.name,
-        hull.aft_of_fp(x)
+        x + 0.0,
+        hull.aft_of_fp(x) + 0.0
     );
     println!("y_m,z_m");
     for p in &sec.points {
-        println!("{:.6},{:.6}", p[0], p[1]);
+        // `+ 0.0` turns −0 into 0 so that no "-0.000000" appears
+        println!("{:.6},{:.6}", p[0] + 0.0, p[1] + 0.0);
     }
     Ok(())
 }

@@ -52,6 +52,23 @@ mod tests {
     }
 
     #[test]
+    fn dispersion_residual_over_all_depths() {
+        // From very shallow (kh = 1e-4) to deep (kh = 50) water, ω² = g k tanh(kh) to round-off.
+        for i in 0..=60 {
+            let kh = 10f64.powf(-4.0 + 6.0 * i as f64 / 60.0).min(50.0);
+            for h in [0.05, 1.0, 30.0, 4000.0] {
+                let k_true = kh / h;
+                let omega = (G * k_true * kh.tanh()).sqrt();
+                let k = wave_number(omega, Some(h));
+                assert!(
+                    ((k - k_true) / k_true).abs() < 1e-10,
+                    "kh {kh} h {h}: k {k} vs {k_true}"
+                );
+            }
+        }
+    }
+
+    #[test]
     fn encounter_frequency_head_seas() {
         let w = 1.0;
         assert!((encounter_frequency(w, 5.0, None) - (w + w * w * 5.0 / G)).abs() < 1e-12);
