@@ -272,6 +272,33 @@ fn station_geometry_errors() {
         "h.toml:8:14",
         "above the deck",
     );
+    // A body entirely under water (closed contours below the waterline) is not a floating ship.
+    located(
+        hull(&HULL.replace(
+            "[[0.0, 0.0], [1.0, 0.0], [1.0, 2.0]]",
+            "[[0.0, 0.0], [1.0, 0.25], [0.0, 0.5]]",
+        )),
+        "h.toml:7:14",
+        "does not cut the hull",
+    );
+    // One end just out of the water under trim is fine; a negative draft or no draft at all is not.
+    let trimmed = hull(&HULL.replace("draft_fp_m = 1.0", "draft_fp_m = 0")).unwrap();
+    let hs = Hydrostatics::compute(&trimmed, &trimmed.loadings[0]);
+    assert!((hs.volume - 10.0).abs() < 1e-9, "{}", hs.volume);
+    located(
+        hull(&HULL.replace("draft_fp_m = 1.0", "draft_fp_m = -0.1")),
+        "h.toml:7:14",
+        "must not be negative",
+    );
+    located(
+        hull(
+            &HULL
+                .replace("draft_fp_m = 1.0", "draft_fp_m = 0")
+                .replace("draft_ap_m = 1.0", "draft_ap_m = 0.0"),
+        ),
+        "h.toml:7:14",
+        "not afloat",
+    );
 }
 
 #[test]

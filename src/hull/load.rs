@@ -245,8 +245,17 @@ fn loadings(
                 .error(&r.name, format!("loading name '{name}' is used twice"))
                 .into());
         }
-        let draft_fp = positive(src, &r.draft_fp_m, "draft_fp_m")?;
-        let draft_ap = positive(src, &r.draft_ap_m, "draft_ap_m")?;
+        // One end may be just out of the water (draft 0) under heavy trim; the mean draft must be positive.
+        let draft_fp = non_negative(src, &r.draft_fp_m, "draft_fp_m")?;
+        let draft_ap = non_negative(src, &r.draft_ap_m, "draft_ap_m")?;
+        if draft_fp + draft_ap <= 0.0 {
+            return Err(src
+                .error(
+                    &r.draft_fp_m,
+                    "the drafts at FP and AP are both zero: the ship is not afloat",
+                )
+                .into());
+        }
         for (d, v) in [(&r.draft_fp_m, draft_fp), (&r.draft_ap_m, draft_ap)] {
             if v > depth {
                 return Err(src
@@ -308,6 +317,21 @@ fn loadings(
         });
     }
     Ok(out)
+}
+
+/// A finite number ≥ 0.
+fn non_negative(src: &SourceText, v: &Spanned<f64>, what: &str) -> Result<f64, InputError> {
+    let x = finite(src, v, what)?;
+    if x < 0.0 {
+        return Err(src.error(
+            v,
+            format!(
+                "{what} must not be negative (z is up from the baseline), got {}",
+                num(x)
+            ),
+        ));
+    }
+    Ok(x)
 }
 
 /// A positive number no larger than `max` (`why` names the limit).
@@ -372,6 +396,14 @@ fn check_immersed(src: &SourceText, hull: &Hull, raw: &Spanned<LoadingRaw>) -> R
             .error(
                 &r.draft_fp_m,
                 format!("loading '{name}': the hull is not immersed at these drafts (the keel is above the waterline everywhere)"),
+            )
+            .into());
+    }
+    if hs.awp <= 0.0 {
+        return Err(src
+            .error(
+                &r.draft_fp_m,
+                format!("loading '{name}': the waterline does not cut the hull (waterplane area 0): the hull must pierce the water surface"),
             )
             .into());
     }

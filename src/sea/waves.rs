@@ -8,6 +8,9 @@ pub const G: f64 = 9.80665;
 pub fn wave_number(omega: f64, depth: Option<f64>) -> f64 {
     let k_deep = omega * omega / G;
     let Some(h) = depth else { return k_deep };
+    if omega == 0.0 {
+        return 0.0;
+    }
     // Start from the Eckart (1952) approximation, then Newton on f(k) = g k tanh(kh) − ω².
     let mut k = k_deep / (k_deep * h).tanh().sqrt().max(1e-12);
     for _ in 0..50 {
@@ -66,6 +69,12 @@ mod tests {
                 );
             }
         }
+    }
+
+    #[test]
+    fn zero_frequency_has_zero_wave_number() {
+        assert_eq!(wave_number(0.0, Some(10.0)), 0.0);
+        assert_eq!(wave_number(0.0, None), 0.0);
     }
 
     #[test]
