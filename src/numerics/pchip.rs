@@ -62,8 +62,8 @@ impl Pchip {
 
     fn interval(&self, t: f64) -> usize {
         let n = self.x.len();
-        // `!(t > x0)` also sends NaN here, so a NaN argument gives a NaN value instead of a panic.
-        if n < 2 || !(t > self.x[0]) {
+        // A NaN argument goes to the first interval and gives a NaN value instead of a panic.
+        if n < 2 || t.is_nan() || t <= self.x[0] {
             return 0;
         }
         if t >= self.x[n - 1] {
