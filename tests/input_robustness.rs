@@ -627,3 +627,75 @@ fn cli_failures_are_clean() {
         assert!(!text.contains("NaN") && !text.contains("inf"), "{text}");
     }
 }
+
+/// Every single-character deletion of a valid file, and every number replaced by an awkward value, gives
+/// either a valid hull or a located error, never a panic or a NaN in the hydrostatics.
+#[test]
+fn mutated_files_never_panic() {
+    let sensor =
+        format!("{HULL}\n[[sensor]]\nname = \"P1\"\nx_m = 0.0\ngirth_m = 1.5\ndiameter_m = 0.02\n");
+    let check_hull = |text: &str| {
+        let r = std::panic::catch_unwind(|| hull(text));
+        match r {
+            Err(_) => panic!("panic on:\n{text}"),
+            Ok(Err(e)) => assert!(e.starts_with("h.toml:"), "unlocated: {e}\n{text}"),
+            Ok(Ok(h)) => {
+                for l in &h.loadings {
+                    let hs = Hydrostatics::compute(&h, l);
+                    let json = serde_json::to_string(&hs).unwrap();
+                    assert!(!json.contains("null"), "NaN/inf in {json}\n{text}");
+                }
+            }
+        }
+    };
+    let check_sea = |text: &str| {
+        let r = std::panic::catch_unwind(|| sea(text));
+        match r {
+            Err(_) => panic!("panic on:\n{text}"),
+            Ok(Err(e)) => assert!(e.starts_with("s.toml:"), "unlocated: {e}\n{text}"),
+            Ok(Ok(s)) => {
+                for i in &s.irregular {
+                    let m = i.spectrum.summary();
+                    assert!(
+                        m.m0.is_finite() && m.m2.is_finite() && m.tz_s.is_finite(),
+                        "{text}"
+                    );
+                }
+                for w in &s.regular {
+                    assert!(w.wavelength_m.is_finite() && w.omega.is_finite(), "{text}");
+                }
+            }
+        }
+    };
+    for (base, check) in [
+        (sensor.as_str(), &check_hull as &dyn Fn(&str)),
+        (SEA, &check_sea as &dyn Fn(&str)),
+    ] {
+        for (i, _) in base.char_indices() {
+            let mut t = base.to_string();
+            t.remove(i);
+            check(&t);
+        }
+        // Each number in turn replaced by awkward values.
+        let mut starts = Vec::new();
+        let b = base.as_bytes();
+        for i in 0..b.len() {
+            let begins = (b[i].is_ascii_digit() || b[i] == b'-')
+                && (i == 0
+                    || !(b[i - 1].is_ascii_alphanumeric() || b[i - 1] == b'.' || b[i - 1] == b'_'));
+            if begins {
+                starts.push(i);
+            }
+        }
+        for &i in &starts {
+            let end = i + base[i..]
+                .find(|c: char| !(c.is_ascii_digit() || c == '.' || c == '-' || c == 'e'))
+                .unwrap_or(base.len() - i);
+            for v in [
+                "nan", "-inf", "0", "-0.0", "-1", "1e308", "1e-308", "3", "0.5", "7.0",
+            ] {
+                check(&format!("{}{v}{}", &base[..i], &base[end..]));
+            }
+        }
+    }
+}

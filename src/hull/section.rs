@@ -293,6 +293,70 @@ mod tests {
     }
 
     #[test]
+    fn area_and_centroid_agree_with_integrals_of_the_half_breadth() {
+        // Random contours (bulbs, shelves, flare, tumblehome): the shoelace area and moment equal
+        // ∫ 2 y(z) dz and ∫ 2 z y(z) dz with y(z) from `half_breadth_at`.
+        let mut seed = 12345u64;
+        let mut rnd = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut tested = 0;
+        for _ in 0..40 {
+            let mut pts = vec![[0.0, 0.0]];
+            let mut z = 0.0;
+            for _ in 0..8 {
+                if rnd() < 0.2 {
+                    // horizontal run
+                } else {
+                    z += 0.05 + 0.3 * rnd();
+                }
+                let y = 0.05 + rnd();
+                pts.push([y, z]);
+            }
+            let s = Section::new(pts);
+            if crate::hull::validate::check_section(&s.points).is_err() {
+                continue;
+            }
+            let zw = 0.7 * s.deck_z();
+            let p = s.properties(zw);
+            // Between consecutive vertex heights y(z) is linear: two-point Gauss is exact for y and z·y,
+            // and its nodes avoid the levels themselves, where shelves make y jump.
+            let mut levels: Vec<f64> = s.points.iter().map(|q| q[1]).filter(|&z| z < zw).collect();
+            levels.push(zw);
+            levels.dedup();
+            let (mut a, mut m) = (0.0, 0.0);
+            for w in levels.windows(2) {
+                let (mid, half) = (0.5 * (w[0] + w[1]), 0.5 * (w[1] - w[0]));
+                for t in [-1.0 / 3f64.sqrt(), 1.0 / 3f64.sqrt()] {
+                    let zi = mid + half * t;
+                    let y = s.half_breadth_at(zi);
+                    a += 2.0 * y * half;
+                    m += 2.0 * y * zi * half;
+                }
+            }
+            assert!(
+                (p.area - a).abs() < 1e-12,
+                "{:?}: {} vs {a}",
+                s.points,
+                p.area
+            );
+            assert!(
+                (p.centroid_z - m / a).abs() < 1e-12,
+                "{:?}: {} vs {}",
+                s.points,
+                p.centroid_z,
+                m / a
+            );
+            assert!(p.half_breadth <= s.max_half_breadth());
+            tested += 1;
+        }
+        assert!(tested >= 20, "only {tested} valid random contours");
+    }
+
+    #[test]
     fn dry_section_has_no_area() {
         let s = Section::new(vec![[0.0, 0.5], [1.0, 1.0]]);
         assert_eq!(s.properties(0.3).area, 0.0);
