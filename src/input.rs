@@ -60,7 +60,9 @@ impl SourceText {
         let before = &self.text[..offset];
         let line = before.matches('\n').count() + 1;
         let line_start = before.rfind('\n').map_or(0, |i| i + 1);
-        let column = self.text[line_start..offset].chars().count() + 1;
+        // A byte-order mark at the start of the file is not a column an editor shows.
+        let line_text = self.text[line_start..offset].trim_start_matches('\u{feff}');
+        let column = line_text.chars().count() + 1;
         (line, column)
     }
 

@@ -394,6 +394,11 @@ fn byte_order_mark_and_crlf_are_accepted() {
     assert!(hull(&crlf).is_ok());
     assert!(hull(&format!("\u{feff}{HULL}")).is_ok());
     located(
+        hull(&format!("\u{feff}{}", HULL.replace("\"box barge\"", "5"))),
+        "h.toml:1:8",
+        "invalid type",
+    );
+    located(
         hull(&crlf.replace("lpp_m = 10.0", "lpp_m = -1")),
         "h.toml:2:9",
         "positive",

@@ -124,17 +124,17 @@ fn info(a: InfoArgs) -> slamtool::Result<()> {
             &format!("{:.4} / {:.4} m", l.draft_fp, l.draft_ap),
         );
         row("mean draft T", &format!("{:.4} m", h.mean_draft_m));
-        row("trim by stern", &format!("{:.4} m", h.trim_by_stern_m));
+        row("trim by stern", &format!("{} m", fx(h.trim_by_stern_m, 4)));
         row("water density", &format!("{:.1} kg/m3", h.rho_kg_m3));
         row("volume", &format!("{:.6} m3", h.volume));
         row(
             "displacement (buoyancy)",
             &format!("{:.3} kg", h.displacement_kg),
         );
-        row("LCB (from midship, +fwd)", &format!("{:.4} m", h.lcb));
+        row("LCB (from midship, +fwd)", &format!("{} m", fx(h.lcb, 4)));
         row("KB", &format!("{:.4} m", h.kb));
         row("waterplane area", &format!("{:.5} m2", h.awp));
-        row("LCF (from midship, +fwd)", &format!("{:.4} m", h.lcf));
+        row("LCF (from midship, +fwd)", &format!("{} m", fx(h.lcf, 4)));
         row("BM_T / BM_L", &format!("{:.4} / {:.3} m", h.bm_t, h.bm_l));
         row("GM_T / GM_L", &format!("{:.4} / {:.3} m", h.gm_t, h.gm_l));
         row("waterline beam B", &format!("{:.4} m", h.beam_wl_m));
@@ -161,8 +161,8 @@ fn info(a: InfoArgs) -> slamtool::Result<()> {
         row(
             "LCG",
             &format!(
-                "{:.4} m{}",
-                m.lcg_m,
+                "{} m{}",
+                fx(m.lcg_m, 4),
                 note(m.lcg_from_lcb, "= LCB, not given")
             ),
         );
@@ -200,6 +200,15 @@ fn info(a: InfoArgs) -> slamtool::Result<()> {
         }
     }
     Ok(())
+}
+
+/// Fixed-point with `p` decimals, without the sign of a value that rounds to zero ("-0.0000").
+fn fx(v: f64, p: usize) -> String {
+    let s = format!("{v:.p$}");
+    match s.strip_prefix('-') {
+        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_string(),
+        _ => s,
+    }
 }
 
 fn row(label: &str, value: &str) {
