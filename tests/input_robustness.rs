@@ -427,6 +427,14 @@ fn csv_offsets() {
     };
     assert!(run(good.as_bytes()).is_ok());
     assert!(run(good.replace('\n', "\r\n").as_bytes()).is_ok());
+    // Windows line ends: errors still on the right line.
+    at(
+        &good
+            .replace("5.0,1.0,0.0\n5.0,1.0,2.0", "5.0,1.0,0.0\n5.0,x,2.0")
+            .replace('\n', "\r\n"),
+        "7:5",
+        "'x' is not a finite number (y_m)",
+    );
     assert!(run(format!("\u{feff}{good}").as_bytes()).is_ok());
     assert!(
         run(good

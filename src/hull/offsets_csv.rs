@@ -53,6 +53,16 @@ fn parse(src: &SourceText, lpp: f64, column: StationColumn) -> Result<Vec<Statio
         let text = lines.get(line.saturating_sub(1)).copied().unwrap_or("");
         src.error_line(line, column_of(text, field), msg)
     };
+    // The line of a record from its byte offset: with CRLF line ends the reader counts lines one short
+    // and starts a record on the '\n' that ends the line before, so skip line-end bytes first.
+    let line_of = |p: &csv::Position| {
+        let bytes = src.text.as_bytes();
+        let mut b = p.byte() as usize;
+        while matches!(bytes.get(b), Some(b'\r' | b'\n')) {
+            b += 1;
+        }
+        src.line_column(b).0
+    };
     let mut reader = csv::ReaderBuilder::new()
         .has_headers(true)
         .flexible(true)
@@ -79,10 +89,10 @@ fn parse(src: &SourceText, lpp: f64, column: StationColumn) -> Result<Vec<Statio
     let mut groups: Vec<(f64, Vec<[f64; 2]>, Vec<usize>)> = Vec::new();
     for rec in reader.records() {
         let rec = rec.map_err(|e| {
-            let line = e.position().map_or(1, |p| p.line() as usize);
+            let line = e.position().map_or(1, |p| line_of(p));
             err(line, 0, format!("malformed CSV row: {e}"))
         })?;
-        let line = rec.position().map_or(1, |p| p.line() as usize);
+        let line = rec.position().map_or(1, line_of);
         if rec.len() != 3 {
             return Err(err(
                 line,
