@@ -89,7 +89,7 @@ fn parse(src: &SourceText, lpp: f64, column: StationColumn) -> Result<Vec<Statio
     let mut groups: Vec<(f64, Vec<[f64; 2]>, Vec<usize>)> = Vec::new();
     for rec in reader.records() {
         let rec = rec.map_err(|e| {
-            let line = e.position().map_or(1, |p| line_of(p));
+            let line = e.position().map_or(1, &line_of);
             err(line, 0, format!("malformed CSV row: {e}"))
         })?;
         let line = rec.position().map_or(1, line_of);
