@@ -97,7 +97,17 @@ impl SourceText {
     pub fn parse_toml<T: DeserializeOwned>(&self) -> Result<T, InputError> {
         toml::from_str::<T>(&self.text).map_err(|e| {
             let span = e.span().unwrap_or(0..0);
-            self.error_at(span, e.message().trim().to_string())
+            let mut message = e.message().trim().to_string();
+            if message.contains("invalid type: map, expected a sequence")
+                && self
+                    .text
+                    .get(span.clone())
+                    .is_some_and(|t| t.trim_start().starts_with('['))
+            {
+                // `[loading]` written for `[[loading]]`
+                message += " (a list of tables is written with double brackets, e.g. [[loading]])";
+            }
+            self.error_at(span, message)
         })
     }
 }

@@ -191,6 +191,15 @@ fn points_must_be_pairs() {
 }
 
 #[test]
+fn single_brackets_for_a_list_of_tables() {
+    located(
+        hull(&HULL.replace("[[loading]]", "[loading]")),
+        "h.toml:5:1",
+        "double brackets",
+    );
+}
+
+#[test]
 fn unknown_keys_at_every_level() {
     located(
         hull(&HULL.replace("depth_m = 2.0", "depth_m = 2.0\nbeam_m = 2")),
