@@ -17,13 +17,33 @@ pub struct SourceText {
 }
 
 impl SourceText {
-    /// Read a file from disk.
+    /// Read a file from disk. Text that is not UTF-8 is an [`InputError`] at the first bad byte.
     pub fn read(path: &Path) -> Result<Self> {
-        let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
-        Ok(Self {
-            path: path.to_path_buf(),
-            text,
-        })
+        let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
+        match String::from_utf8(bytes) {
+            Ok(text) => Ok(Self {
+                path: path.to_path_buf(),
+                text,
+            }),
+            Err(e) => {
+                let valid = e.utf8_error().valid_up_to();
+                let bytes = e.into_bytes();
+                // Everything before the bad byte is valid UTF-8, so it can be counted in characters.
+                let good = Self {
+                    path: path.to_path_buf(),
+                    text: String::from_utf8_lossy(&bytes[..valid]).into_owned(),
+                };
+                let (line, column) = good.line_column(valid);
+                Err(Error::Input(good.error_line(
+                    line,
+                    column,
+                    format!(
+                        "the file is not UTF-8 text (byte 0x{:02x}); save it as UTF-8",
+                        bytes[valid]
+                    ),
+                )))
+            }
+        }
     }
 
     /// Wrap text that did not come from disk (tests, generated inputs).
@@ -40,7 +60,9 @@ impl SourceText {
         let before = &self.text[..offset];
         let line = before.matches('\n').count() + 1;
         let line_start = before.rfind('\n').map_or(0, |i| i + 1);
-        let column = self.text[line_start..offset].chars().count() + 1;
+        // A byte-order mark at the start of the file is not a column an editor shows.
+        let line_text = self.text[line_start..offset].trim_start_matches('\u{feff}');
+        let column = line_text.chars().count() + 1;
         (line, column)
     }
 
@@ -75,7 +97,17 @@ impl SourceText {
     pub fn parse_toml<T: DeserializeOwned>(&self) -> Result<T, InputError> {
         toml::from_str::<T>(&self.text).map_err(|e| {
             let span = e.span().unwrap_or(0..0);
-            self.error_at(span, e.message().trim().to_string())
+            let mut message = e.message().trim().to_string();
+            if message.contains("invalid type: map, expected a sequence")
+                && self
+                    .text
+                    .get(span.clone())
+                    .is_some_and(|t| t.trim_start().starts_with('['))
+            {
+                // `[loading]` written for `[[loading]]`
+                message += " (a list of tables is written with double brackets, e.g. [[loading]])";
+            }
+            self.error_at(span, message)
         })
     }
 }
@@ -84,7 +116,10 @@ impl SourceText {
 pub fn positive(src: &SourceText, v: &Spanned<f64>, what: &str) -> Result<f64, InputError> {
     let x = *v.get_ref();
     if !x.is_finite() || x <= 0.0 {
-        return Err(src.error(v, format!("{what} must be a positive number, got {x}")));
+        return Err(src.error(
+            v,
+            format!("{what} must be a positive number, got {}", num(x)),
+        ));
     }
     Ok(x)
 }
@@ -93,7 +128,7 @@ pub fn positive(src: &SourceText, v: &Spanned<f64>, what: &str) -> Result<f64, I
 pub fn finite(src: &SourceText, v: &Spanned<f64>, what: &str) -> Result<f64, InputError> {
     let x = *v.get_ref();
     if !x.is_finite() {
-        return Err(src.error(v, format!("{what} must be a finite number, got {x}")));
+        return Err(src.error(v, format!("{what} must be a finite number, got {}", num(x))));
     }
     Ok(x)
 }
@@ -108,7 +143,63 @@ pub fn in_range(
 ) -> Result<f64, InputError> {
     let x = finite(src, v, what)?;
     if x < lo || x > hi {
-        return Err(src.error(v, format!("{what} must lie in [{lo}, {hi}], got {x}")));
+        return Err(src.error(
+            v,
+            format!(
+                "{what} must lie in [{}, {}], got {}",
+                num(lo),
+                num(hi),
+                num(x)
+            ),
+        ));
     }
     Ok(x)
+}
+
+/// A pair of numbers written as a two-element TOML array, e.g. a `(y, z)` offset `[0.12, 0.10]`.
+/// Integers are accepted as numbers; arrays of any other length are an error located at the array
+/// (serde's fixed-size arrays silently ignore extra elements in toml).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pair(pub [f64; 2]);
+
+impl<'de> serde::Deserialize<'de> for Pair {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+        struct V;
+        impl<'de> serde::de::Visitor<'de> for V {
+            type Value = Pair;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("a pair of numbers [y, z]")
+            }
+            fn visit_seq<A: serde::de::SeqAccess<'de>>(
+                self,
+                mut seq: A,
+            ) -> std::result::Result<Pair, A::Error> {
+                use serde::de::Error as _;
+                let mut v = Vec::with_capacity(2);
+                while let Some(x) = seq.next_element::<f64>()? {
+                    v.push(x);
+                }
+                match v[..] {
+                    [a, b] => Ok(Pair([a, b])),
+                    _ => Err(A::Error::custom(format!(
+                        "expected a pair of numbers [y, z], got {} number{}",
+                        v.len(),
+                        if v.len() == 1 { "" } else { "s" }
+                    ))),
+                }
+            }
+        }
+        d.deserialize_seq(V)
+    }
+}
+
+/// A number as the user wrote it (shortest form that reads back the same), in exponent form when very
+/// small or very large so that a message never shows hundreds of digits.
+pub fn num(x: f64) -> String {
+    let a = x.abs();
+    if x == 0.0 || !x.is_finite() || (1e-4..1e9).contains(&a) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
 }

@@ -234,7 +234,7 @@ fn csv_offsets_are_read_and_errors_point_into_the_csv() {
     .unwrap();
     let e = Hull::from_file(&p).unwrap_err().to_string();
     assert!(
-        e.contains("off.csv:4:6:") && e.contains("not monotone"),
+        e.contains("off.csv:4:10:") && e.contains("not monotone"),
         "{e}"
     );
 }

@@ -34,10 +34,15 @@ pub struct SectionArgs {
     /// Hull file (hull.toml).
     file: PathBuf,
     /// Station as a fraction of Lpp aft of the forward perpendicular.
-    #[arg(long, conflicts_with = "x_m", required_unless_present = "x_m")]
+    #[arg(
+        long,
+        conflicts_with = "x_m",
+        required_unless_present = "x_m",
+        allow_negative_numbers = true
+    )]
     aft_of_fp: Option<f64>,
-    /// Station as x in m from midship (positive forward).
-    #[arg(long)]
+    /// Station as x in m from midship (positive forward; aft of midship is negative, e.g. --x-m -1.2).
+    #[arg(long, allow_negative_numbers = true)]
     x_m: Option<f64>,
     /// Give z relative to the local waterline of this loading condition (default: above baseline).
     #[arg(long)]
@@ -119,17 +124,17 @@ fn info(a: InfoArgs) -> slamtool::Result<()> {
             &format!("{:.4} / {:.4} m", l.draft_fp, l.draft_ap),
         );
         row("mean draft T", &format!("{:.4} m", h.mean_draft_m));
-        row("trim by stern", &format!("{:.4} m", h.trim_by_stern_m));
+        row("trim by stern", &format!("{} m", fx(h.trim_by_stern_m, 4)));
         row("water density", &format!("{:.1} kg/m3", h.rho_kg_m3));
         row("volume", &format!("{:.6} m3", h.volume));
         row(
             "displacement (buoyancy)",
             &format!("{:.3} kg", h.displacement_kg),
         );
-        row("LCB (from midship, +fwd)", &format!("{:.4} m", h.lcb));
+        row("LCB (from midship, +fwd)", &format!("{} m", fx(h.lcb, 4)));
         row("KB", &format!("{:.4} m", h.kb));
         row("waterplane area", &format!("{:.5} m2", h.awp));
-        row("LCF (from midship, +fwd)", &format!("{:.4} m", h.lcf));
+        row("LCF (from midship, +fwd)", &format!("{} m", fx(h.lcf, 4)));
         row("BM_T / BM_L", &format!("{:.4} / {:.3} m", h.bm_t, h.bm_l));
         row("GM_T / GM_L", &format!("{:.4} / {:.3} m", h.gm_t, h.gm_l));
         row("waterline beam B", &format!("{:.4} m", h.beam_wl_m));
@@ -156,8 +161,8 @@ fn info(a: InfoArgs) -> slamtool::Result<()> {
         row(
             "LCG",
             &format!(
-                "{:.4} m{}",
-                m.lcg_m,
+                "{} m{}",
+                fx(m.lcg_m, 4),
                 note(m.lcg_from_lcb, "= LCB, not given")
             ),
         );
@@ -197,23 +202,34 @@ fn info(a: InfoArgs) -> slamtool::Result<()> {
     Ok(())
 }
 
+/// Fixed-point with `p` decimals, without the sign of a value that rounds to zero ("-0.0000").
+fn fx(v: f64, p: usize) -> String {
+    let s = format!("{v:.p$}");
+    match s.strip_prefix('-') {
+        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_string(),
+        _ => s,
+    }
+}
+
 fn row(label: &str, value: &str) {
     println!("  {label:<26}{value}");
 }
 
 fn section(a: SectionArgs) -> slamtool::Result<()> {
     let hull = Hull::from_file(&a.file)?;
-    let x = match (a.x_m, a.aft_of_fp) {
-        (Some(x), _) => x,
-        (None, Some(f)) => hull.station_x(f),
+    let (x, given) = match (a.x_m, a.aft_of_fp) {
+        (Some(x), _) => (x, format!("--x-m {x}")),
+        (None, Some(f)) => (hull.station_x(f), format!("--aft-of-fp {f}")),
         (None, None) => unreachable!("clap requires one of them"),
     };
     if !x.is_finite() {
         return Err(slamtool::Error::Invalid(format!(
-            "station x = {x} is not a number"
+            "{given}: the station must be a finite number"
         )));
     }
-    let sec = hull.section_at(x)?;
+    let sec = hull
+        .section_at(x)
+        .map_err(|e| slamtool::Error::Invalid(format!("{given}: {e}")))?;
     let (sec, frame) = match &a.loading {
         Some(n) => {
             let l = hull.loading(Some(n))?;
@@ -226,13 +242,15 @@ fn section(a: SectionArgs) -> slamtool::Result<()> {
         None => (sec, "z above baseline".to_string()),
     };
     println!(
-        "# {} at x = {x:.4} m ({:.4} Lpp aft of FP); {frame}",
+        "# {} at x = {:.4} m ({:.4} Lpp aft of FP); {frame}",
         hull.name,
-        hull.aft_of_fp(x)
+        x + 0.0,
+        hull.aft_of_fp(x) + 0.0
     );
     println!("y_m,z_m");
     for p in &sec.points {
-        println!("{:.6},{:.6}", p[0], p[1]);
+        // `+ 0.0` turns −0 into 0 so that no "-0.000000" appears
+        println!("{:.6},{:.6}", p[0] + 0.0, p[1] + 0.0);
     }
     Ok(())
 }

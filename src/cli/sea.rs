@@ -16,7 +16,7 @@ pub struct InfoArgs {
     /// Sea-state file (sea_state.toml).
     file: PathBuf,
     /// Ship length (m), needed to turn Froude numbers into speeds.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     lpp_m: Option<f64>,
     /// Print JSON instead of tables.
     #[arg(long)]
@@ -30,17 +30,18 @@ pub fn run(c: SeaCommand) -> slamtool::Result<()> {
 }
 
 fn info(a: InfoArgs) -> slamtool::Result<()> {
+    if let Some(l) = a.lpp_m
+        && !(l.is_finite() && l > 0.0 && l <= 1000.0)
+    {
+        return Err(slamtool::Error::Invalid(format!(
+            "--lpp-m must be a ship length in metres (0 to 1000 m), got {}",
+            slamtool::input::num(l)
+        )));
+    }
     let sea = SeaState::from_file(&a.file)?;
     let speeds = match (&sea.speeds, a.lpp_m) {
         (Speeds::MetresPerSecond(v), _) => Some(v.clone()),
-        (Speeds::FroudeNumbers(_), Some(l)) if l.is_finite() && l > 0.0 => {
-            Some(sea.speeds.resolve(l))
-        }
-        (Speeds::FroudeNumbers(_), Some(l)) => {
-            return Err(slamtool::Error::Invalid(format!(
-                "--lpp-m must be a positive length, got {l}"
-            )));
-        }
+        (Speeds::FroudeNumbers(_), Some(l)) => Some(sea.speeds.resolve(l)),
         (Speeds::FroudeNumbers(_), None) => None,
     };
     let summaries: Vec<_> = sea.irregular.iter().map(|s| s.spectrum.summary()).collect();

@@ -9,7 +9,8 @@
 //! * I_T = ∫ (2/3) b³ dx, I_L = ∫ 2b (x − LCF)² dx, BM_T = I_T/∇, BM_L = I_L/∇
 //! * GM_T = KB + BM_T − KG, GM_L = KB + BM_L − KG
 //! * C_B = ∇/(L B T), C_M = A_M/(B T), C_P = ∇/(A_M L), C_WP = A_wp/(L B), with L = Lpp, B the largest
-//!   waterline breadth, T the mean draft and A_M the midship (x = 0) sectional area.
+//!   waterline breadth (over the stations and the interpolated sections between them), T the mean draft and
+//!   A_M the midship (x = 0) sectional area.
 //!
 //! The integrals over x use Gauss-Legendre quadrature (6 points per station interval) on the sections
 //! interpolated between stations (shape-preserving PCHIP, see `interpolate`), each cut by its own local
@@ -129,7 +130,14 @@ impl Hydrostatics {
         let bm_t = safe(i_t, volume);
         let bm_l = safe(i_l, volume);
         let t_mean = loading.mean_draft();
-        let beam = 2.0 * sac.iter().map(|s| s.half_breadth_m).fold(0.0, f64::max);
+        // Largest waterline breadth over the stations and the interpolated sections between them (with
+        // trim or flare the widest waterline need not lie at a station).
+        let beam = 2.0
+            * sac
+                .iter()
+                .map(|s| s.half_breadth_m)
+                .chain(samples.iter().map(|(_, _, p)| p.half_breadth))
+                .fold(0.0, f64::max);
         let am = match hull.section_at(0.0) {
             Ok(s) => s.properties(loading.draft_at(0.0, lpp)).area,
             Err(_) => 0.0,

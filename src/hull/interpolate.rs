@@ -125,3 +125,34 @@ mod tests {
         }
     }
 }
+
+#[cfg(test)]
+mod bundled {
+    use crate::hull::Hull;
+    use crate::hull::validate::check_section;
+
+    /// Every interpolated section of the bundled hulls is itself a valid contour (keel on the centreline,
+    /// z never falling, no self-intersection), including next to stems that degenerate to a line.
+    #[test]
+    fn interpolated_sections_of_bundled_hulls_are_valid_contours() {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("hulls");
+        for name in [
+            "wigley-iii.toml",
+            "ochi-vform.toml",
+            "car-carrier-hm2005.toml",
+        ] {
+            let hull = Hull::from_file(&dir.join(name)).unwrap();
+            let (xa, xf) = hull.x_range();
+            for i in 0..=500 {
+                let x = xa + (xf - xa) * i as f64 / 500.0;
+                let s = hull.section_at(x).unwrap();
+                if let Err(f) = check_section(&s.points) {
+                    panic!("{name} at x = {x}: {}", f.message);
+                }
+            }
+            for x in [xa + 1e-7, xf - 1e-7] {
+                check_section(&hull.section_at(x).unwrap().points).unwrap();
+            }
+        }
+    }
+}

@@ -10,14 +10,36 @@ use super::{
     Hull, LoadingCondition, Section, SectionInterpolator, Sensor, Station, offsets_csv, station_x,
 };
 use crate::error::{Error, InputError, Result};
-use crate::input::{SourceText, finite, in_range, positive};
+use crate::input::{SourceText, finite, in_range, num, positive};
 
 /// Water density accepted as physical, kg/m³ (fresh water at 40 °C to brine-rich sea water).
 const RHO_RANGE: (f64, f64) = (990.0, 1050.0);
 
+/// Longest Lpp accepted, m: longer than any ship built (the longest, Seawise Giant, had 440 m), so that a
+/// length typed in millimetres is caught.
+pub(crate) const LPP_MAX: f64 = 1000.0;
+
+/// A given displacement may differ from the buoyancy at the loading's drafts by at most this fraction; a
+/// larger difference is a mistake (a unit slip, wrong drafts), since the ship would not float at those drafts.
+const MASS_BUOYANCY_TOLERANCE: f64 = 0.25;
+
 pub(crate) fn hull_from_source(src: &SourceText) -> Result<Hull> {
     let raw: HullFile = src.parse_toml()?;
+    if raw.name.get_ref().trim().is_empty() {
+        return Err(src.error(&raw.name, "name must not be empty").into());
+    }
     let lpp = positive(src, &raw.lpp_m, "lpp_m")?;
+    if lpp > LPP_MAX {
+        return Err(src
+            .error(
+                &raw.lpp_m,
+                format!(
+                    "lpp_m = {} m is longer than any ship (limit {LPP_MAX} m); lengths are in metres",
+                    num(lpp)
+                ),
+            )
+            .into());
+    }
 
     let stations = match (&raw.station, &raw.offsets_csv) {
         (Some(st), None) => stations_from_toml(src, lpp, st)?,
@@ -40,6 +62,36 @@ pub(crate) fn hull_from_source(src: &SourceText) -> Result<Hull> {
         }
     };
 
+    let (xa, xf) = (stations[0].x, stations[stations.len() - 1].x);
+    if !(xa <= 1e-9 && xf >= -1e-9) || xf - xa < 0.5 * lpp {
+        return Err(src
+            .error(
+                &raw.lpp_m,
+                format!(
+                    "the offsets run from x = {xa:.4} m to {xf:.4} m, which {} for lpp_m = {} m: the stations must cover midship (x = 0) and at least half the length (x is from midship, positive forward; aft_of_fp is a fraction of Lpp)",
+                    if xa <= 1e-9 && xf >= -1e-9 {
+                        "is less than half of Lpp"
+                    } else {
+                        "does not include midship"
+                    },
+                    num(lpp)
+                ),
+            )
+            .into());
+    }
+    if stations.iter().all(|s| s.section.max_half_breadth() <= 0.0) {
+        let at = match (&raw.station, &raw.offsets_csv) {
+            (Some(st), _) => st.span(),
+            (_, Some(csv)) => csv.span(),
+            _ => 0..0,
+        };
+        return Err(src
+            .error_at(
+                at,
+                "the hull has no breadth: every station lies on the centreline (y = 0)",
+            )
+            .into());
+    }
     let top = stations
         .iter()
         .map(|s| s.section.deck_z())
@@ -51,7 +103,7 @@ pub(crate) fn hull_from_source(src: &SourceText) -> Result<Hull> {
 
     let loadings = loadings(src, lpp, depth, &raw.loading)?;
     let mut hull = Hull {
-        name: raw.name.clone(),
+        name: raw.name.get_ref().trim().to_string(),
         description: raw.description.clone(),
         lpp,
         depth,
@@ -62,6 +114,7 @@ pub(crate) fn hull_from_source(src: &SourceText) -> Result<Hull> {
         source: src.path.clone(),
     };
     for l in &raw.loading.get_ref()[..] {
+        check_offsets_reach_waterline(src, &hull, l)?;
         check_immersed(src, &hull, l)?;
     }
     let mut names = HashSet::new();
@@ -108,12 +161,15 @@ fn stations_from_toml(
     for st in raw.get_ref() {
         let s = st.get_ref();
         let x = position(src, lpp, st, &s.x_m, &s.aft_of_fp)?;
-        let points: Vec<[f64; 2]> = s.points.get_ref().iter().map(|p| *p.get_ref()).collect();
-        check_section(&points).map_err(|(i, msg)| {
+        let points: Vec<[f64; 2]> = s.points.get_ref().iter().map(|p| p.get_ref().0).collect();
+        check_section(&points).map_err(|f| {
             if s.points.get_ref().is_empty() {
-                src.error(&s.points, msg)
+                src.error(&s.points, f.message)
             } else {
-                src.error(&s.points.get_ref()[i.min(points.len() - 1)], msg)
+                src.error(
+                    &s.points.get_ref()[f.point.min(points.len() - 1)],
+                    f.message,
+                )
             }
         })?;
         out.push((x, points, st.span()));
@@ -130,6 +186,14 @@ pub(crate) fn order_stations<L: Clone>(
     let ascending = stations.len() < 2 || stations[1].0 > stations[0].0;
     for k in 1..stations.len() {
         let (prev, cur) = (stations[k - 1].0, stations[k].0);
+        if cur == prev {
+            return Err(err(
+                stations[k].2.clone(),
+                format!(
+                    "two stations at the same position x = {cur:.6} m: each station must have its own x"
+                ),
+            ));
+        }
         let ok = if ascending { cur > prev } else { cur < prev };
         if !ok {
             let dir = if ascending {
@@ -181,8 +245,17 @@ fn loadings(
                 .error(&r.name, format!("loading name '{name}' is used twice"))
                 .into());
         }
-        let draft_fp = positive(src, &r.draft_fp_m, "draft_fp_m")?;
-        let draft_ap = positive(src, &r.draft_ap_m, "draft_ap_m")?;
+        // One end may be just out of the water (draft 0) under heavy trim; the mean draft must be positive.
+        let draft_fp = non_negative(src, &r.draft_fp_m, "draft_fp_m")?;
+        let draft_ap = non_negative(src, &r.draft_ap_m, "draft_ap_m")?;
+        if draft_fp + draft_ap <= 0.0 {
+            return Err(src
+                .error(
+                    &r.draft_fp_m,
+                    "the drafts at FP and AP are both zero: the ship is not afloat",
+                )
+                .into());
+        }
         for (d, v) in [(&r.draft_fp_m, draft_fp), (&r.draft_ap_m, draft_ap)] {
             if v > depth {
                 return Err(src
@@ -201,6 +274,7 @@ fn loadings(
             Some(v) => Some(positive(src, v, "displacement_kg")?),
             None => None,
         };
+        // Checked against the buoyancy once the hull is assembled (check_immersed).
         let lcg = match &r.lcg_m {
             Some(v) => Some(in_range(src, v, -0.5 * lpp, 0.5 * lpp, "lcg_m")?),
             None => None,
@@ -215,8 +289,8 @@ fn loadings(
                 .into());
         }
         let k_yy = match (&r.k_yy_m, &r.k_yy_over_lpp) {
-            (Some(k), None) => in_range(src, k, 1e-9, 0.5 * lpp, "k_yy_m")?,
-            (None, Some(f)) => in_range(src, f, 1e-9, 0.5, "k_yy_over_lpp")? * lpp,
+            (Some(k), None) => at_most(src, k, 0.5 * lpp, "k_yy_m", "half of Lpp")?,
+            (None, Some(f)) => at_most(src, f, 0.5, "k_yy_over_lpp", "half of Lpp")? * lpp,
             (Some(k), Some(_)) => {
                 return Err(src
                     .error(k, "give either k_yy_m or k_yy_over_lpp, not both")
@@ -245,17 +319,110 @@ fn loadings(
     Ok(out)
 }
 
+/// A finite number ≥ 0.
+fn non_negative(src: &SourceText, v: &Spanned<f64>, what: &str) -> Result<f64, InputError> {
+    let x = finite(src, v, what)?;
+    if x < 0.0 {
+        return Err(src.error(
+            v,
+            format!(
+                "{what} must not be negative (z is up from the baseline), got {}",
+                num(x)
+            ),
+        ));
+    }
+    Ok(x)
+}
+
+/// A positive number no larger than `max` (`why` names the limit).
+fn at_most(
+    src: &SourceText,
+    v: &Spanned<f64>,
+    max: f64,
+    what: &str,
+    why: &str,
+) -> Result<f64, InputError> {
+    let x = positive(src, v, what)?;
+    if x > max {
+        return Err(src.error(
+            v,
+            format!("{what} = {} is more than {why} ({})", num(x), num(max)),
+        ));
+    }
+    Ok(x)
+}
+
+/// The offsets must reach the local waterline at every station: a contour that stops below the water with
+/// some breadth leaves the immersed hull undefined. (A contour that closes on the centreline below the
+/// water, such as a section through a bulb forward of the stem, is complete.)
+fn check_offsets_reach_waterline(
+    src: &SourceText,
+    hull: &Hull,
+    raw: &Spanned<LoadingRaw>,
+) -> Result<()> {
+    let r = raw.get_ref();
+    let name = r.name.get_ref().trim();
+    let l = hull.loading(Some(name))?;
+    for st in &hull.stations {
+        let zw = l.draft_at(st.x, hull.lpp);
+        let last = st.section.points[st.section.points.len() - 1];
+        if last[1] < zw - 1e-9 && last[0] > 1e-9 {
+            let at = if st.x >= 0.0 {
+                &r.draft_fp_m
+            } else {
+                &r.draft_ap_m
+            };
+            return Err(src
+                .error(
+                    at,
+                    format!(
+                        "loading '{name}': the waterline (z = {zw:.4} m) is above the top of the offsets of the station at x = {:.4} m, which end at z = {:.4} m with half-breadth {:.4} m; give that station's contour up to the deck",
+                        st.x, last[1], last[0]
+                    ),
+                )
+                .into());
+        }
+    }
+    Ok(())
+}
+
 fn check_immersed(src: &SourceText, hull: &Hull, raw: &Spanned<LoadingRaw>) -> Result<()> {
-    let name = raw.get_ref().name.get_ref().trim();
+    let r = raw.get_ref();
+    let name = r.name.get_ref().trim();
     let l = hull.loading(Some(name))?;
     let hs = super::Hydrostatics::compute(hull, l);
     if hs.volume <= 0.0 {
         return Err(src
             .error(
-                &raw.get_ref().draft_fp_m,
-                format!("loading '{name}': the hull is not immersed at these drafts (keel above the waterline everywhere)"),
+                &r.draft_fp_m,
+                format!("loading '{name}': the hull is not immersed at these drafts (the keel is above the waterline everywhere)"),
             )
             .into());
+    }
+    if hs.awp <= 0.0 {
+        return Err(src
+            .error(
+                &r.draft_fp_m,
+                format!("loading '{name}': the waterline does not cut the hull (waterplane area 0): the hull must pierce the water surface"),
+            )
+            .into());
+    }
+    if let (Some(m), Some(v)) = (l.displacement_kg, &r.displacement_kg) {
+        let mismatch = (m - hs.displacement_kg) / hs.displacement_kg;
+        if mismatch.abs() > MASS_BUOYANCY_TOLERANCE {
+            return Err(src
+                .error(
+                    v,
+                    format!(
+                        "loading '{name}': displacement_kg = {} kg differs by {:+.1} % from the buoyancy at these drafts ({:.1} kg; more than {:.0} % means the ship does not float at these drafts): check the drafts, water density and units (kg, not tonnes)",
+                        num(m),
+                        100.0 * mismatch,
+                        hs.displacement_kg,
+                        100.0 * MASS_BUOYANCY_TOLERANCE
+                    ),
+                )
+                .into());
+        }
     }
     Ok(())
 }
@@ -286,10 +453,32 @@ fn sensor(src: &SourceText, hull: &Hull, s: &Spanned<SensorRaw>) -> Result<Senso
     let diameter = positive(src, &r.diameter_m, "diameter_m")?;
     let section = hull.section_at(x)?;
     let girth_total = section.girth();
+    if diameter > girth_total {
+        return Err(src
+            .error(
+                &r.diameter_m,
+                format!(
+                    "sensor '{name}': diameter_m = {} m is larger than the whole section contour at x = {x:.4} m (girth {girth_total:.4} m)",
+                    num(diameter)
+                ),
+            )
+            .into());
+    }
     let (girth, position) = match (&r.girth_m, &r.y_m, &r.z_m) {
         (Some(g), None, None) => {
-            let g = in_range(src, g, 0.0, girth_total, "girth_m")?;
-            (g, section.point_at_girth(g))
+            let gv = finite(src, g, "girth_m")?;
+            if !(0.0..=girth_total).contains(&gv) {
+                return Err(src
+                    .error(
+                        g,
+                        format!(
+                            "sensor '{name}': girth_m = {} m is not on the section contour at x = {x:.4} m, which runs from girth 0 (keel) to {girth_total:.4} m (deck)",
+                            num(gv)
+                        ),
+                    )
+                    .into());
+            }
+            (gv, section.point_at_girth(gv))
         }
         (None, Some(y), Some(z)) => {
             let q = [finite(src, y, "y_m")?, finite(src, z, "z_m")?];

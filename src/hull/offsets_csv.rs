@@ -35,6 +35,7 @@ pub(crate) fn read_stations(
 
 /// Column (1-based) where field `field` starts on a CSV line (plain comma-separated fields).
 fn column_of(line: &str, field: usize) -> usize {
+    let line = line.trim_start_matches('\u{feff}');
     let mut col = 1;
     for (i, part) in line.split(',').enumerate() {
         if i == field {
@@ -42,7 +43,8 @@ fn column_of(line: &str, field: usize) -> usize {
         }
         col += part.chars().count() + 1;
     }
-    col
+    // Past the last field: the end of the line.
+    line.trim_end().chars().count() + 1
 }
 
 fn parse(src: &SourceText, lpp: f64, column: StationColumn) -> Result<Vec<Station>> {
@@ -51,8 +53,19 @@ fn parse(src: &SourceText, lpp: f64, column: StationColumn) -> Result<Vec<Statio
         let text = lines.get(line.saturating_sub(1)).copied().unwrap_or("");
         src.error_line(line, column_of(text, field), msg)
     };
+    // The line of a record from its byte offset: with CRLF line ends the reader counts lines one short
+    // and starts a record on the '\n' that ends the line before, so skip line-end bytes first.
+    let line_of = |p: &csv::Position| {
+        let bytes = src.text.as_bytes();
+        let mut b = p.byte() as usize;
+        while matches!(bytes.get(b), Some(b'\r' | b'\n')) {
+            b += 1;
+        }
+        src.line_column(b).0
+    };
     let mut reader = csv::ReaderBuilder::new()
         .has_headers(true)
+        .flexible(true)
         .comment(Some(b'#'))
         .trim(csv::Trim::All)
         .from_reader(src.text.as_bytes());
@@ -76,15 +89,23 @@ fn parse(src: &SourceText, lpp: f64, column: StationColumn) -> Result<Vec<Statio
     let mut groups: Vec<(f64, Vec<[f64; 2]>, Vec<usize>)> = Vec::new();
     for rec in reader.records() {
         let rec = rec.map_err(|e| {
-            let line = e.position().map_or(1, |p| p.line() as usize);
+            let line = e.position().map_or(1, &line_of);
             err(line, 0, format!("malformed CSV row: {e}"))
         })?;
-        let line = rec.position().map_or(1, |p| p.line() as usize);
+        let line = rec.position().map_or(1, line_of);
         if rec.len() != 3 {
             return Err(err(
                 line,
-                0,
-                format!("expected 3 fields (station, y_m, z_m), got {}", rec.len()),
+                rec.len().min(3),
+                format!(
+                    "expected 3 fields (station, y_m, z_m), got {}: {}",
+                    rec.len(),
+                    if rec.len() < 3 {
+                        "a value is missing"
+                    } else {
+                        "remove the extra values"
+                    }
+                ),
             )
             .into());
         }
@@ -140,7 +161,13 @@ fn parse(src: &SourceText, lpp: f64, column: StationColumn) -> Result<Vec<Statio
             )
             .into());
         }
-        check_section(&points).map_err(|(i, msg)| err(at[i.min(at.len() - 1)], 1, msg))?;
+        check_section(&points).map_err(|f| {
+            err(
+                at[f.point.min(at.len() - 1)],
+                f.coord.map_or(1, |c| c + 1),
+                f.message,
+            )
+        })?;
         stations.push((x, points, at[0]));
     }
     order_stations(stations, |line, msg| err(line, 0, msg).into())

@@ -4,10 +4,12 @@
 use serde::Deserialize;
 use toml::Spanned;
 
+use crate::input::Pair;
+
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct HullFile {
-    pub name: String,
+    pub name: Spanned<String>,
     pub description: Option<String>,
     pub lpp_m: Spanned<f64>,
     pub depth_m: Option<Spanned<f64>>,
@@ -37,15 +39,27 @@ pub(crate) struct LoadingRaw {
 pub(crate) struct StationRaw {
     pub x_m: Option<Spanned<f64>>,
     pub aft_of_fp: Option<Spanned<f64>>,
-    pub points: Spanned<Vec<Spanned<[f64; 2]>>>,
+    pub points: Spanned<Vec<Spanned<Pair>>>,
 }
 
 #[derive(Debug, Deserialize, Clone, Copy, PartialEq, Eq)]
+#[serde(try_from = "String")]
 pub(crate) enum StationColumn {
-    #[serde(rename = "x_m")]
     XM,
-    #[serde(rename = "aft_of_fp")]
     AftOfFp,
+}
+
+impl TryFrom<String> for StationColumn {
+    type Error = String;
+    fn try_from(s: String) -> Result<Self, String> {
+        match s.as_str() {
+            "x_m" => Ok(Self::XM),
+            "aft_of_fp" => Ok(Self::AftOfFp),
+            _ => Err(format!(
+                "station = \"{s}\" is not a station column kind: use \"x_m\" (m from midship, positive forward) or \"aft_of_fp\" (fraction of Lpp aft of the FP)"
+            )),
+        }
+    }
 }
 
 #[derive(Debug, Deserialize)]

@@ -46,38 +46,30 @@ impl Section {
         self.points.iter().map(|p| p[0]).fold(0.0, f64::max)
     }
 
-    /// Half-breadth where the contour crosses height `z` (first crossing from the keel, so a flat bottom
-    /// at exactly `z` counts with its outer end). Zero below the keel; the deck half-breadth above the deck.
+    /// Half-breadth of the section at height `z`: where the contour crosses z (z never falls along the
+    /// contour, so there is one crossing), or, where the contour runs horizontally at exactly z (a flat
+    /// bottom or a shelf at that height), the largest y on that run, the breadth of the solid section cut at
+    /// z. Zero below the keel; the deck half-breadth above the deck (the sides taken on vertically).
     pub fn half_breadth_at(&self, z: f64) -> f64 {
         let p = &self.points;
         if z < p[0][1] {
             return 0.0;
         }
+        let mut on_level = None::<f64>;
+        for q in p.iter().filter(|q| q[1] == z) {
+            on_level = Some(on_level.map_or(q[0], |y: f64| y.max(q[0])));
+        }
+        if let Some(y) = on_level {
+            return y;
+        }
         for w in p.windows(2) {
             let (a, b) = (w[0], w[1]);
-            if z >= a[1] && z <= b[1] {
-                if b[1] > a[1] {
-                    // On a horizontal run at height z take the outer end: the loop continues to it.
-                    if z == b[1] {
-                        continue;
-                    }
-                    let s = (z - a[1]) / (b[1] - a[1]);
-                    return a[0] + s * (b[0] - a[0]);
-                }
-            } else if z < a[1] {
-                break;
+            if a[1] < z && z < b[1] {
+                let s = (z - a[1]) / (b[1] - a[1]);
+                return a[0] + s * (b[0] - a[0]);
             }
         }
-        // z at or above the last point that reaches it: the outer point at that height
-        let mut y = 0.0;
-        for q in p {
-            if q[1] <= z {
-                y = q[0];
-            } else {
-                break;
-            }
-        }
-        y
+        p[p.len() - 1][0]
     }
 
     /// The part of the contour below height `z_w`, ending on the waterline (empty if the keel is above it).
@@ -109,10 +101,16 @@ impl Section {
     }
 
     /// Immersed area, centroid height and waterline half-breadth for waterline height `z_w` (baseline frame).
+    /// A contour that ends below `z_w` is taken on vertically from its last point up to the waterline (when a
+    /// hull is read, offsets that stop below a loading's waterline with some breadth are rejected).
     pub fn properties(&self, z_w: f64) -> SectionProperties {
         let wet = self.wetted(z_w);
         if wet.len() < 2 {
-            return SectionProperties::default();
+            // Dry, or a flat keel exactly at the waterline: no area, but the waterline may have breadth.
+            return SectionProperties {
+                half_breadth: self.half_breadth_at(z_w),
+                ..SectionProperties::default()
+            };
         }
         // Close the half-section polygon along the waterline back to the centreline, then down it.
         let mut poly = wet.clone();
@@ -136,7 +134,7 @@ impl Section {
         SectionProperties {
             area: 2.0 * half_area,
             centroid_z,
-            half_breadth: wet.last().map_or(0.0, |q| q[0]),
+            half_breadth: self.half_breadth_at(z_w),
         }
     }
 
@@ -246,6 +244,116 @@ mod tests {
         let s = box_section();
         assert!((s.half_breadth_at(0.0) - 1.0).abs() < 1e-12);
         assert_eq!(s.half_breadth_at(-0.1), 0.0);
+    }
+
+    #[test]
+    fn shelf_and_bulb_properties_are_exact() {
+        // Out to y = 1 over 0 ≤ z ≤ 1, a shelf in to 0.5 at z = 1, up to z = 2, then flaring out to 1.5 at z = 3.
+        let s = Section::new(vec![
+            [0.0, 0.0],
+            [1.0, 0.0],
+            [1.0, 1.0],
+            [0.5, 1.0],
+            [0.5, 2.0],
+            [1.5, 3.0],
+        ]);
+        // Half area under z = 2.5: 1·1 + 0.5·1 + ∫₂^2.5 (0.5 + (z − 2)) dz = 1.875.
+        let p = s.properties(2.5);
+        assert!((p.area - 3.75).abs() < 1e-12, "{}", p.area);
+        // First moment of the half area about the base: 1·0.5 + 0.5·1.5 + ∫₂^2.5 z (z − 1.5) dz.
+        let m = 0.5 + 0.75 + ((2.5f64.powi(3) - 8.0) / 3.0 - 1.5 * (2.5f64.powi(2) - 4.0) / 2.0);
+        assert!((p.centroid_z - m / 1.875).abs() < 1e-12, "{}", p.centroid_z);
+        assert!((p.half_breadth - 1.0).abs() < 1e-12);
+        // On the shelf the solid section is widest (y = 1); just above it is 0.5, just below 1.
+        assert_eq!(s.half_breadth_at(1.0), 1.0);
+        assert_eq!(s.half_breadth_at(1.0 + 1e-9), 0.5);
+        assert_eq!(s.half_breadth_at(1.0 - 1e-9), 1.0);
+        assert_eq!(s.properties(1.0).half_breadth, 1.0);
+    }
+
+    #[test]
+    fn flat_keel_exactly_at_the_waterline() {
+        let p = box_section().properties(0.0);
+        assert_eq!(p.area, 0.0);
+        assert_eq!(p.half_breadth, 1.0);
+        assert_eq!(box_section().properties(-0.1), SectionProperties::default());
+    }
+
+    #[test]
+    fn deck_below_the_waterline_continues_vertically() {
+        // Box of depth 2 under a waterline at 3: sides taken on up to the waterline.
+        let p = box_section().properties(3.0);
+        assert!((p.area - 6.0).abs() < 1e-12);
+        assert!((p.centroid_z - 1.5).abs() < 1e-12);
+        assert_eq!(p.half_breadth, 1.0);
+        // A bulb contour that closes on the centreline below the water adds nothing above its top.
+        let bulb = Section::new(vec![[0.0, 0.0], [1.0, 1.0], [0.0, 2.0]]);
+        assert!((bulb.properties(5.0).area - 2.0).abs() < 1e-12);
+        assert_eq!(bulb.properties(5.0).half_breadth, 0.0);
+    }
+
+    #[test]
+    fn area_and_centroid_agree_with_integrals_of_the_half_breadth() {
+        // Random contours (bulbs, shelves, flare, tumblehome): the shoelace area and moment equal
+        // ∫ 2 y(z) dz and ∫ 2 z y(z) dz with y(z) from `half_breadth_at`.
+        let mut seed = 12345u64;
+        let mut rnd = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut tested = 0;
+        for _ in 0..40 {
+            let mut pts = vec![[0.0, 0.0]];
+            let mut z = 0.0;
+            for _ in 0..8 {
+                if rnd() < 0.2 {
+                    // horizontal run
+                } else {
+                    z += 0.05 + 0.3 * rnd();
+                }
+                let y = 0.05 + rnd();
+                pts.push([y, z]);
+            }
+            let s = Section::new(pts);
+            if crate::hull::validate::check_section(&s.points).is_err() {
+                continue;
+            }
+            let zw = 0.7 * s.deck_z();
+            let p = s.properties(zw);
+            // Between consecutive vertex heights y(z) is linear: two-point Gauss is exact for y and z·y,
+            // and its nodes avoid the levels themselves, where shelves make y jump.
+            let mut levels: Vec<f64> = s.points.iter().map(|q| q[1]).filter(|&z| z < zw).collect();
+            levels.push(zw);
+            levels.dedup();
+            let (mut a, mut m) = (0.0, 0.0);
+            for w in levels.windows(2) {
+                let (mid, half) = (0.5 * (w[0] + w[1]), 0.5 * (w[1] - w[0]));
+                for t in [-1.0 / 3f64.sqrt(), 1.0 / 3f64.sqrt()] {
+                    let zi = mid + half * t;
+                    let y = s.half_breadth_at(zi);
+                    a += 2.0 * y * half;
+                    m += 2.0 * y * zi * half;
+                }
+            }
+            assert!(
+                (p.area - a).abs() < 1e-12,
+                "{:?}: {} vs {a}",
+                s.points,
+                p.area
+            );
+            assert!(
+                (p.centroid_z - m / a).abs() < 1e-12,
+                "{:?}: {} vs {}",
+                s.points,
+                p.centroid_z,
+                m / a
+            );
+            assert!(p.half_breadth <= s.max_half_breadth());
+            tested += 1;
+        }
+        assert!(tested >= 20, "only {tested} valid random contours");
     }
 
     #[test]

@@ -62,7 +62,8 @@ impl Pchip {
 
     fn interval(&self, t: f64) -> usize {
         let n = self.x.len();
-        if n < 2 || t <= self.x[0] {
+        // A NaN argument goes to the first interval and gives a NaN value instead of a panic.
+        if n < 2 || t.is_nan() || t <= self.x[0] {
             return 0;
         }
         if t >= self.x[n - 1] {
@@ -150,6 +151,41 @@ mod tests {
         let lin = Pchip::new(&[0.0, 1.0, 3.0], &[0.0, 2.0, 6.0]);
         assert!((lin.eval(2.0) - 4.0).abs() < 1e-12);
         assert!((lin.integral() - 9.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn nan_argument_gives_nan_not_a_panic() {
+        let p = Pchip::new(&[0.0, 1.0, 2.0], &[0.0, 1.0, 4.0]);
+        assert!(p.eval(f64::NAN).is_nan());
+        assert!(p.derivative(f64::NAN).is_nan());
+    }
+
+    #[test]
+    fn monotone_data_give_a_monotone_interpolant() {
+        // Uneven spacing and slopes from flat to steep: the interpolant never turns back.
+        let x = [0.0, 0.1, 0.15, 1.0, 1.05, 3.0, 3.01];
+        let y = [0.0, 0.0, 0.5, 0.52, 2.0, 2.0, 7.0];
+        let p = Pchip::new(&x, &y);
+        let mut prev = f64::NEG_INFINITY;
+        for i in 0..=3010 {
+            let v = p.eval(i as f64 * 0.001);
+            assert!(v >= prev - 1e-12, "decreases at {}", i as f64 * 0.001);
+            assert!(p.derivative(i as f64 * 0.001) >= -1e-9);
+            prev = v;
+        }
+        // Flat data stay flat.
+        for i in 0..=50 {
+            assert!((p.eval(3.0 - 1.95 * i as f64 / 50.0) - 2.0).abs() < 1e-12);
+        }
+        // The exact integral agrees with a fine quadrature of eval.
+        let m = 301_000;
+        let h = 3.01 / m as f64;
+        let num: f64 = (0..m).map(|i| p.eval((i as f64 + 0.5) * h) * h).sum();
+        assert!(
+            (num - p.integral()).abs() < 1e-8,
+            "{num} vs {}",
+            p.integral()
+        );
     }
 
     #[test]

@@ -14,7 +14,7 @@ pub use spectrum::{Spectrum, SpectrumSummary};
 pub use waves::{G, encounter_frequency, frequency_from_wavelength, wave_number};
 
 use crate::error::{InputError, Result};
-use crate::input::{SourceText, in_range, positive};
+use crate::input::{SourceText, in_range, num, positive};
 use schema::{IrregularRaw, RegularRaw, SeaFile, SpectrumKind};
 
 /// Knot in m/s.
@@ -22,6 +22,22 @@ pub const KNOT: f64 = 1852.0 / 3600.0;
 
 /// Steepest regular wave accepted: H/λ = 1/7 (Michell 1893 deep-water breaking limit).
 pub const BREAKING_STEEPNESS: f64 = 1.0 / 7.0;
+
+/// Wave heights (and H_s) accepted, m: from 1 mm (below that surface tension governs) to 40 m (higher than
+/// any wave measured; the Draupner wave was 25.6 m).
+const HEIGHT_RANGE: (f64, f64) = (1e-3, 40.0);
+/// Wave periods accepted (T, T_p, T_z), s: gravity waves from 0.1 s (a 16 mm wave) to 60 s (long swell).
+const PERIOD_RANGE: (f64, f64) = (0.1, 60.0);
+/// Wavelengths accepted, m: those of the deep-water waves with the periods above.
+const WAVELENGTH_RANGE: (f64, f64) = (0.015, 6000.0);
+/// Deepest water, m (the deepest ocean trench is about 11 km).
+const DEPTH_MAX: f64 = 11_000.0;
+
+/// Breaking steepness limit in water of depth h: H/λ = (1/7) tanh(k h) (Miche 1944; 1/7 in deep water,
+/// H ≈ 0.9 h in shallow water).
+pub fn breaking_steepness(k: f64, depth: Option<f64>) -> f64 {
+    BREAKING_STEEPNESS * depth.map_or(1.0, |h| (k * h).tanh())
+}
 
 /// A regular (Airy) head wave.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -98,8 +114,25 @@ impl SeaState {
     /// Validate a sea state from text.
     pub fn from_source(src: &SourceText) -> Result<Self> {
         let raw: SeaFile = src.parse_toml()?;
+        if raw.name.get_ref().trim().is_empty() {
+            return Err(src.error(&raw.name, "name must not be empty").into());
+        }
         let depth = match &raw.water_depth_m {
-            Some(d) => Some(positive(src, d, "water_depth_m")?),
+            Some(d) => {
+                let h = positive(src, d, "water_depth_m")?;
+                if h > DEPTH_MAX {
+                    return Err(src
+                        .error(
+                            d,
+                            format!(
+                                "water_depth_m = {} m is deeper than any ocean ({DEPTH_MAX} m); leave it out for deep water",
+                                num(h)
+                            ),
+                        )
+                        .into());
+                }
+                Some(h)
+            }
             None => None,
         };
         if let Some(h) = &raw.heading
@@ -116,7 +149,25 @@ impl SeaState {
         }
         let mut irregular = Vec::new();
         for (i, r) in raw.irregular.iter().enumerate() {
-            irregular.push(irregular_sea(src, r, i)?);
+            irregular.push(irregular_sea(src, r, depth, i)?);
+        }
+        let mut names = std::collections::HashSet::new();
+        let given = raw
+            .regular
+            .iter()
+            .map(|r| &r.get_ref().name)
+            .chain(raw.irregular.iter().map(|r| &r.get_ref().name))
+            .flatten();
+        for n in given {
+            let t = n.get_ref().trim();
+            if t.is_empty() {
+                return Err(src.error(n, "a wave name must not be empty").into());
+            }
+            if !names.insert(t) {
+                return Err(src
+                    .error(n, format!("wave name '{t}' is used twice"))
+                    .into());
+            }
         }
         if regular.is_empty() && irregular.is_empty() {
             return Err(src
@@ -127,7 +178,7 @@ impl SeaState {
                 .into());
         }
         Ok(Self {
-            name: raw.name,
+            name: raw.name.get_ref().trim().to_string(),
             description: raw.description,
             water_depth_m: depth,
             speeds,
@@ -184,10 +235,10 @@ fn regular_wave(
     i: usize,
 ) -> Result<RegularWave, InputError> {
     let w = r.get_ref();
-    let height = positive(src, &w.height_m, "height_m")?;
+    let height = bounded(src, &w.height_m, HEIGHT_RANGE, "height_m", "m")?;
     let (omega, lambda) = match (&w.period_s, &w.wavelength_m) {
         (Some(t), None) => {
-            let t = positive(src, t, "period_s")?;
+            let t = bounded(src, t, PERIOD_RANGE, "period_s", "s")?;
             let omega = 2.0 * std::f64::consts::PI / t;
             (
                 omega,
@@ -195,7 +246,7 @@ fn regular_wave(
             )
         }
         (None, Some(l)) => {
-            let l = positive(src, l, "wavelength_m")?;
+            let l = bounded(src, l, WAVELENGTH_RANGE, "wavelength_m", "m")?;
             (frequency_from_wavelength(l, depth), l)
         }
         (Some(t), Some(_)) => {
@@ -205,18 +256,28 @@ fn regular_wave(
             return Err(src.error(r, "missing wave period: give period_s or wavelength_m"));
         }
     };
-    if height / lambda > BREAKING_STEEPNESS {
+    let limit = breaking_steepness(2.0 * std::f64::consts::PI / lambda, depth);
+    if height / lambda > limit {
         return Err(src.error(
             &w.height_m,
             format!(
-                "wave height {height} m over wavelength {lambda:.3} m is steeper than the breaking limit H/λ = 1/7"
+                "wave height {} m over wavelength {lambda:.4} m (H/λ = {:.4}) is steeper than the breaking limit H/λ = {:.4} ({})",
+                num(height),
+                height / lambda,
+                limit,
+                if depth.is_some() {
+                    "(1/7) tanh(kh), Miche 1944"
+                } else {
+                    "1/7 in deep water"
+                }
             ),
         ));
     }
     Ok(RegularWave {
         name: w
             .name
-            .clone()
+            .as_ref()
+            .map(|n| n.get_ref().trim().to_string())
             .unwrap_or_else(|| format!("regular-{}", i + 1)),
         height_m: height,
         omega,
@@ -228,10 +289,11 @@ fn regular_wave(
 fn irregular_sea(
     src: &SourceText,
     r: &Spanned<IrregularRaw>,
+    depth: Option<f64>,
     i: usize,
 ) -> Result<IrregularSea, InputError> {
     let w = r.get_ref();
-    let hs = positive(src, &w.hs_m, "hs_m")?;
+    let hs = bounded(src, &w.hs_m, HEIGHT_RANGE, "hs_m", "m")?;
     let kind = *w.spectrum.get_ref();
     if kind != SpectrumKind::Jonswap
         && let Some(g) = &w.gamma
@@ -261,9 +323,9 @@ fn irregular_sea(
                 _ => Spectrum::bretschneider(hs, tp),
             };
             match (&w.tp_s, &w.tz_s) {
-                (Some(tp), None) => make(positive(src, tp, "tp_s")?),
+                (Some(tp), None) => make(bounded(src, tp, PERIOD_RANGE, "tp_s", "s")?),
                 (None, Some(tz)) => {
-                    let tz = positive(src, tz, "tz_s")?;
+                    let tz = bounded(src, tz, PERIOD_RANGE, "tz_s", "s")?;
                     make(tz).with_tz(tz)
                 }
                 (Some(tp), Some(_)) => {
@@ -275,27 +337,56 @@ fn irregular_sea(
             }
         }
     };
-    // Steepness check on the significant wave: H_s/λ_p within the breaking limit.
-    let lambda_p = 2.0 * std::f64::consts::PI * G / spectrum.peak_frequency().powi(2);
-    if hs / lambda_p > BREAKING_STEEPNESS {
+    // Steepness check on the significant wave: H_s/λ_p within the breaking limit at this depth.
+    let k_p = wave_number(spectrum.peak_frequency(), depth);
+    let lambda_p = 2.0 * std::f64::consts::PI / k_p;
+    let limit = breaking_steepness(k_p, depth);
+    if hs / lambda_p > limit {
         return Err(src.error(
             &w.hs_m,
             format!(
-                "hs_m = {hs} m is steeper than the breaking limit for this period (H_s/λ_p = {:.3} > 1/7)",
-                hs / lambda_p
+                "hs_m = {} m is steeper than the breaking limit for this period (H_s/λ_p = {:.4} > {:.4}, λ_p = {lambda_p:.4} m)",
+                num(hs),
+                hs / lambda_p,
+                limit
             ),
         ));
     }
     let duration_h = match &w.duration_h {
-        Some(d) => Some(positive(src, d, "duration_h")?),
+        // A century of exposure at most.
+        Some(d) => Some(bounded(src, d, (1e-6, 876_600.0), "duration_h", "h")?),
         None => None,
     };
     Ok(IrregularSea {
         name: w
             .name
-            .clone()
+            .as_ref()
+            .map(|n| n.get_ref().trim().to_string())
             .unwrap_or_else(|| format!("irregular-{}", i + 1)),
         spectrum,
         duration_h,
     })
+}
+
+/// A number within a plausible physical range (positive and finite first, so the message says so).
+fn bounded(
+    src: &SourceText,
+    v: &Spanned<f64>,
+    (lo, hi): (f64, f64),
+    what: &str,
+    unit: &str,
+) -> Result<f64, InputError> {
+    let x = positive(src, v, what)?;
+    if x < lo || x > hi {
+        return Err(src.error(
+            v,
+            format!(
+                "{what} = {} {unit} is outside the physical range {} to {} {unit}",
+                num(x),
+                num(lo),
+                num(hi)
+            ),
+        ));
+    }
+    Ok(x)
 }

@@ -63,16 +63,17 @@ impl Spectrum {
         }
     }
 
-    /// JONSWAP spectrum from H_s, T_p and peak enhancement γ, normalised to m0 = H_s²/16.
+    /// JONSWAP spectrum from H_s, T_p and peak enhancement γ, normalised to m0 = H_s²/16. The factor
+    /// depends on the shape only (γ), so it is found for H_s = 1 (no underflow for small H_s).
     pub fn jonswap(hs: f64, tp: f64, gamma: f64) -> Self {
         let omega_p = 2.0 * std::f64::consts::PI / tp;
-        let raw = Spectrum::Jonswap {
-            hs_m: hs,
+        let unit = Spectrum::Jonswap {
+            hs_m: 1.0,
             omega_p,
             gamma,
             norm: 1.0,
         };
-        let norm = hs * hs / 16.0 / raw.moment(0);
+        let norm = 1.0 / 16.0 / unit.moment(0);
         Spectrum::Jonswap {
             hs_m: hs,
             omega_p,
@@ -189,16 +190,21 @@ mod tests {
         // Closed form for the ω⁻⁵ exp(−B ω⁻⁴) shape, B = 1.25 ω_p⁴: m_n ∝ B^{(n−4)/4} Γ((4−n)/4), so
         // T_z/T_p = (1.25 π)^{−1/4} = 0.7104 and T_1/T_p = 1/(1.25^{1/4} Γ(3/4)) = 0.7717.
         let s = Spectrum::bretschneider(2.0, 10.0).summary();
+        let tz_tp = (1.25 * std::f64::consts::PI).powf(-0.25);
+        // Γ(3/4) = 1.2254167024651776
+        let t1_tp = 1.0 / (1.25f64.powf(0.25) * 1.225_416_702_465_177_6);
         assert!(
-            (s.tz_s / s.tp_s - 0.710).abs() < 2e-3,
+            (s.tz_s / s.tp_s - tz_tp).abs() < 1e-6,
             "{}",
             s.tz_s / s.tp_s
         );
         assert!(
-            (s.t1_s / s.tp_s - 0.772).abs() < 2e-3,
+            (s.t1_s / s.tp_s - t1_tp).abs() < 1e-6,
             "{}",
             s.t1_s / s.tp_s
         );
+        // m0 = H_s²/16 in closed form for this shape.
+        assert!((s.m0 - 0.25).abs() < 1e-7, "{}", s.m0);
         // JONSWAP: DNV-RP-C205 (2010) §3.5.5.5 fit T_z/T_p = 0.6673 + 0.05037γ − 0.006230γ² + 0.0003341γ³.
         let j = Spectrum::jonswap(2.0, 10.0, 3.3).summary();
         let dnv = 0.6673 + 0.05037 * 3.3 - 0.006230 * 3.3f64.powi(2) + 0.0003341 * 3.3f64.powi(3);
@@ -210,8 +216,51 @@ mod tests {
     }
 
     #[test]
+    fn jonswap_normalisation() {
+        // Normalised numerically to m0 = H_s²/16; the factor is close to DNV-RP-C205 (2010) eq. 3.5.5.4's
+        // approximation A_γ = 1 − 0.287 ln γ (stated there as an approximation, so within 2 %).
+        for gamma in [1.0, 2.0, 3.3, 5.0, 7.0] {
+            let s = Spectrum::jonswap(4.0, 12.0, gamma);
+            let Spectrum::Jonswap { norm, .. } = s else {
+                unreachable!()
+            };
+            assert!((s.summary().m0 - 1.0).abs() < 1e-9, "γ {gamma}");
+            let dnv = 1.0 - 0.287 * gamma.ln();
+            assert!(
+                (norm - dnv).abs() / dnv < 0.02,
+                "γ {gamma}: {norm} vs {dnv}"
+            );
+            if gamma == 1.0 {
+                assert!(
+                    (norm - 1.0).abs() < 1e-9,
+                    "γ = 1 is the Bretschneider shape"
+                );
+            }
+        }
+        // Independent of H_s, including small model-scale seas.
+        let small = Spectrum::jonswap(1e-3, 1.0, 3.3).summary();
+        assert!((small.hs_m - 1e-3).abs() < 1e-12);
+    }
+
+    #[test]
+    fn pierson_moskowitz_peak_follows_from_hs() {
+        // ω_p = (16 α g² / (5 H_s²))^{1/4}, so that m0 = α g²/(5 ω_p⁴) = H_s²/16.
+        let s = Spectrum::pierson_moskowitz(5.0);
+        let wp = s.peak_frequency();
+        let m0 = ALPHA_PM * G * G / (5.0 * wp.powi(4));
+        assert!((m0 - 25.0 / 16.0).abs() < 1e-12);
+        assert!((s.summary().m0 - m0).abs() / m0 < 1e-7);
+        // S at the peak: α g² ω_p⁻⁵ e^{−5/4}
+        let peak = ALPHA_PM * G * G / wp.powi(5) * (-1.25f64).exp();
+        assert!((s.density(wp) - peak).abs() / peak < 1e-12);
+    }
+
+    #[test]
     fn tz_parameterisation_round_trips() {
         let s = Spectrum::jonswap(2.0, 10.0, 2.0).with_tz(6.0);
         assert!((s.summary().tz_s - 6.0).abs() < 1e-6);
+        let b = Spectrum::bretschneider(2.0, 10.0).with_tz(6.0);
+        let tp = 6.0 * (1.25 * std::f64::consts::PI).powf(0.25);
+        assert!((b.peak_period() - tp).abs() < 1e-5, "{}", b.peak_period());
     }
 }

@@ -8,6 +8,9 @@ pub const G: f64 = 9.80665;
 pub fn wave_number(omega: f64, depth: Option<f64>) -> f64 {
     let k_deep = omega * omega / G;
     let Some(h) = depth else { return k_deep };
+    if omega == 0.0 {
+        return 0.0;
+    }
     // Start from the Eckart (1952) approximation, then Newton on f(k) = g k tanh(kh) − ω².
     let mut k = k_deep / (k_deep * h).tanh().sqrt().max(1e-12);
     for _ in 0..50 {
@@ -49,6 +52,29 @@ mod tests {
         assert!((0.1 / k - (G * h).sqrt()).abs() / (G * h).sqrt() < 1e-3);
         let lam = 2.0 * std::f64::consts::PI / wave_number(w, Some(3.0));
         assert!((frequency_from_wavelength(lam, Some(3.0)) - w).abs() < 1e-10);
+    }
+
+    #[test]
+    fn dispersion_residual_over_all_depths() {
+        // From very shallow (kh = 1e-4) to deep (kh = 50) water, ω² = g k tanh(kh) to round-off.
+        for i in 0..=60 {
+            let kh = 10f64.powf(-4.0 + 6.0 * i as f64 / 60.0).min(50.0);
+            for h in [0.05, 1.0, 30.0, 4000.0] {
+                let k_true = kh / h;
+                let omega = (G * k_true * kh.tanh()).sqrt();
+                let k = wave_number(omega, Some(h));
+                assert!(
+                    ((k - k_true) / k_true).abs() < 1e-10,
+                    "kh {kh} h {h}: k {k} vs {k_true}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn zero_frequency_has_zero_wave_number() {
+        assert_eq!(wave_number(0.0, Some(10.0)), 0.0);
+        assert_eq!(wave_number(0.0, None), 0.0);
     }
 
     #[test]
