@@ -7,26 +7,8 @@ use slamtool::hull::Hull;
 use slamtool::input::SourceText;
 use slamtool::sea::SeaState;
 
-const HULL: &str = r#"name = "box barge"
-lpp_m = 10.0
-depth_m = 2.0
-
-[[loading]]
-name = "design"
-draft_fp_m = 1.0
-draft_ap_m = 1.0
-water_density_kg_m3 = 1025.0
-kg_m = 1.0
-k_yy_m = 2.5
-
-[[station]]
-x_m = -5.0
-points = [[0.0, 0.0], [1.0, 0.0], [1.0, 2.0]]
-
-[[station]]
-x_m = 5.0
-points = [[0.0, 0.0], [1.0, 0.0], [1.0, 2.0]]
-"#;
+mod common;
+use common::BOX_HULL as HULL;
 
 /// Parse `text` as a hull and return the error text (panics if it parses).
 fn hull_error(text: &str) -> String {

@@ -9,26 +9,8 @@ use slamtool::hull::{Hull, Hydrostatics};
 use slamtool::input::SourceText;
 use slamtool::sea::SeaState;
 
-const HULL: &str = r#"name = "box barge"
-lpp_m = 10.0
-depth_m = 2.0
-
-[[loading]]
-name = "design"
-draft_fp_m = 1.0
-draft_ap_m = 1.0
-water_density_kg_m3 = 1025.0
-kg_m = 1.0
-k_yy_m = 2.5
-
-[[station]]
-x_m = -5.0
-points = [[0.0, 0.0], [1.0, 0.0], [1.0, 2.0]]
-
-[[station]]
-x_m = 5.0
-points = [[0.0, 0.0], [1.0, 0.0], [1.0, 2.0]]
-"#;
+mod common;
+use common::BOX_HULL as HULL;
 
 const SEA: &str = "name = \"s\"\nspeeds_m_s = [1.0, 2.0]\n\n[[regular]]\nheight_m = 0.2\nperiod_s = 2.0\n\n[[irregular]]\nspectrum = \"jonswap\"\nhs_m = 3.0\ntp_s = 9.0\n";
 

@@ -1,50 +1,17 @@
 //! Relative motion, keel entry and Ochi slam statistics.
 
 use nalgebra::Complex;
+use slamtool::seakeeping::ShipModel;
 use slamtool::seakeeping::relative_motion::{self, RelativeMotion};
-use slamtool::seakeeping::section::HalfSection;
 use slamtool::seakeeping::slamming::{self, SampledSpectrum};
 use slamtool::seakeeping::strip_theory::{self, StripSettings};
-use slamtool::seakeeping::{ShipModel, StripSection};
 
-const G: f64 = 9.81;
+mod common;
+use common::G;
 
-/// Wigley III (see tests/seakeeping_wigley.rs), coarser.
+/// Wigley III (see tests/common), coarser.
 fn wigley3(n_stations: usize) -> ShipModel {
-    let (l, b, t) = (3.0, 0.3, 0.1875);
-    let stations = (0..n_stations)
-        .map(|i| {
-            let xi = -1.0 + 2.0 * i as f64 / (n_stations - 1) as f64;
-            let hb = 0.5 * b * (1.0 - xi * xi) * (1.0 + 0.2 * xi * xi);
-            let section = (hb > 1e-9).then(|| {
-                HalfSection::new(
-                    (0..=12)
-                        .map(|k| {
-                            let z = -1.0 + k as f64 / 12.0;
-                            [hb * (1.0 - z * z), z * t]
-                        })
-                        .collect(),
-                )
-                .unwrap()
-            });
-            StripSection {
-                x: 0.5 * l * xi,
-                section,
-            }
-        })
-        .collect();
-    let mut m = ShipModel {
-        lpp: l,
-        rho: 1000.0,
-        g: G,
-        mass: 1.0,
-        xg: 0.0,
-        zg: 0.17 - t,
-        k_yy: 0.75,
-        stations,
-    };
-    m.mass = m.rho * m.volume();
-    m
+    common::wigley3(n_stations, 12)
 }
 
 fn coarse() -> StripSettings {

@@ -2,11 +2,11 @@
 //! provenance). Tolerances are those of issue 4: coefficients and wave loads 15 %, heave RAO 15 %,
 //! zero-speed pitch RAO 25 % for lambda/L >= 1.
 
-use slamtool::seakeeping::section::HalfSection;
+use slamtool::seakeeping::ShipModel;
 use slamtool::seakeeping::strip_theory::{self, StripSettings};
-use slamtool::seakeeping::{ShipModel, StripSection};
 
-const G: f64 = 9.81;
+mod common;
+use common::G;
 
 fn reference() -> toml::Table {
     let text = std::fs::read_to_string(concat!(
@@ -30,44 +30,8 @@ fn arr(t: &toml::Table, table: &str, key: &str) -> Vec<f64> {
         .collect()
 }
 
-/// Wigley III from its analytic form (alpha = 0): 2y/B = (1 - zeta^2)(1 - xi^2)(1 + 0.2 xi^2).
-pub fn wigley3(n_stations: usize) -> ShipModel {
-    let (l, b, t) = (3.0, 0.3, 0.1875);
-    let nz = 16;
-    let stations = (0..n_stations)
-        .map(|i| {
-            let xi = -1.0 + 2.0 * i as f64 / (n_stations - 1) as f64;
-            let hb = 0.5 * b * (1.0 - xi * xi) * (1.0 + 0.2 * xi * xi);
-            let section = if hb > 1e-9 {
-                let pts = (0..=nz)
-                    .map(|k| {
-                        let zeta = -1.0 + k as f64 / nz as f64;
-                        [hb * (1.0 - zeta * zeta), zeta * t]
-                    })
-                    .collect();
-                Some(HalfSection::new(pts).unwrap())
-            } else {
-                None
-            };
-            StripSection {
-                x: 0.5 * l * xi,
-                section,
-            }
-        })
-        .collect();
-    let mut m = ShipModel {
-        lpp: l,
-        rho: 1000.0,
-        g: G,
-        mass: 1.0,
-        xg: 0.0,
-        zg: 0.17 - t,
-        k_yy: 0.75,
-        stations,
-    };
-    m.mass = m.rho * m.volume();
-    m.validate().unwrap();
-    m
+fn wigley3(n_stations: usize) -> ShipModel {
+    common::wigley3(n_stations, 16)
 }
 
 fn within(what: &str, got: f64, want: f64, tol: f64) -> bool {
