@@ -38,7 +38,10 @@ pub enum Error {
     /// Bad input, located in its file.
     Input(InputError),
     /// An operating-system error on a file.
-    Io { path: PathBuf, source: std::io::Error },
+    Io {
+        path: PathBuf,
+        source: std::io::Error,
+    },
     /// A numerical method failed (no convergence, singular system, ...).
     Numerical(String),
     /// A request that is well-formed but cannot be carried out with these inputs.

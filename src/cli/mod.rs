@@ -4,7 +4,9 @@ use std::process::ExitCode;
 
 use clap::{CommandFactory, Parser, Subcommand};
 
+mod bench;
 mod completions;
+mod entry;
 mod hull;
 
 /// 2D+t ship-slamming design tool: strip theory, SPH water entry, analytic cross-checks, design reports.
@@ -20,6 +22,11 @@ enum Command {
     /// Hull definition: hydrostatics, form coefficients, sections.
     #[command(subcommand)]
     Hull(hull::HullCommand),
+    /// One 2D water-entry run with SPH (wedge, hull section or case file).
+    #[command(subcommand)]
+    Entry(entry::EntryCommand),
+    /// SPH throughput benchmark (particle-steps per second).
+    Bench(bench::BenchArgs),
     /// Print a shell completion script.
     Completions(completions::CompletionsArgs),
     /// Print the manual page (roff) on stdout.
@@ -30,6 +37,8 @@ pub fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Hull(c) => hull::run(c),
+        Command::Entry(c) => entry::run(c),
+        Command::Bench(a) => bench::run(a),
         Command::Completions(a) => completions::run(a, &mut Cli::command()),
         Command::Man => completions::man(&Cli::command()),
     };

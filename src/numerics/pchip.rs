@@ -167,7 +167,10 @@ mod tests {
     fn integral_of_smooth_function_converges() {
         let n = 41;
         let x: Vec<f64> = (0..n).map(|i| i as f64 / (n - 1) as f64).collect();
-        let y: Vec<f64> = x.iter().map(|t| (1.0 - t * t) * (1.0 + 0.2 * t * t)).collect();
+        let y: Vec<f64> = x
+            .iter()
+            .map(|t| (1.0 - t * t) * (1.0 + 0.2 * t * t))
+            .collect();
         let exact = 1.0 + 0.2 / 3.0 - 1.0 / 3.0 - 0.2 / 5.0;
         assert!((Pchip::new(&x, &y).integral() - exact).abs() < 1e-5);
     }
