@@ -66,7 +66,7 @@ pub fn run(a: BenchArgs) -> slamtool::Result<()> {
         "bytes_per_particle": sim.bytes_per_particle(),
         "stage_seconds": {
             "sort": c.sort_s - c_setup.sort_s, "boundary": c.boundary_s - c_setup.boundary_s,
-            "gradient": c.gradient_s - c_setup.gradient_s, "continuity": c.continuity_s - c_setup.continuity_s, "momentum": c.momentum_s - c_setup.momentum_s,
+            "continuity": c.continuity_s - c_setup.continuity_s, "momentum": c.momentum_s - c_setup.momentum_s,
             "integrate": c.integrate_s - c_setup.integrate_s, "sensors": c.sensors_s - c_setup.sensors_s,
         },
         "final_force_n_per_m": sim.body.fz,

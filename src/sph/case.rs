@@ -350,19 +350,21 @@ struct WedgeFile {
     height_m: Option<Spanned<f64>>,
 }
 
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(rename_all = "snake_case")]
+enum MotionKind {
+    Constant,
+    Prescribed,
+    FreeHeave,
+}
+
 #[derive(Debug, Deserialize)]
-#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
-enum MotionFile {
-    Constant {
-        speed_m_s: Spanned<f64>,
-    },
-    Prescribed {
-        table: Spanned<Vec<[f64; 2]>>,
-    },
-    FreeHeave {
-        mass_per_m_kg: Spanned<f64>,
-        speed_m_s: Spanned<f64>,
-    },
+#[serde(deny_unknown_fields)]
+struct MotionFile {
+    kind: Spanned<MotionKind>,
+    speed_m_s: Option<Spanned<f64>>,
+    table: Option<Spanned<Vec<[f64; 2]>>>,
+    mass_per_m_kg: Option<Spanned<f64>>,
 }
 
 #[derive(Debug, Default, Deserialize)]
@@ -457,11 +459,28 @@ pub fn from_source(src: &SourceText) -> Result<Setup> {
             )));
         }
     };
-    let motion = match &f.motion {
-        MotionFile::Constant { speed_m_s } => MotionSpec::Constant {
-            speed_m_s: positive(src, speed_m_s, "speed_m_s")?,
+    let m = &f.motion;
+    let need = |v: &Option<Spanned<f64>>, key: &str| -> Result<f64> {
+        match v {
+            Some(x) => Ok(positive(src, x, key)?),
+            None => Err(src
+                .error(&m.kind, format!("this motion kind needs `{key}`"))
+                .into()),
+        }
+    };
+    let motion = match m.kind.get_ref() {
+        MotionKind::Constant => MotionSpec::Constant {
+            speed_m_s: need(&m.speed_m_s, "speed_m_s")?,
         },
-        MotionFile::Prescribed { table } => {
+        MotionKind::Prescribed => {
+            let Some(table) = &m.table else {
+                return Err(src
+                    .error(
+                        &m.kind,
+                        "this motion kind needs `table = [[t_s, v_m_s], ...]`",
+                    )
+                    .into());
+            };
             let rows = table.get_ref();
             if rows.len() < 2 {
                 return Err(src
@@ -487,12 +506,9 @@ pub fn from_source(src: &SourceText) -> Result<Setup> {
                 table: rows.clone(),
             }
         }
-        MotionFile::FreeHeave {
-            mass_per_m_kg,
-            speed_m_s,
-        } => MotionSpec::FreeHeave {
-            mass_per_m_kg: positive(src, mass_per_m_kg, "mass_per_m_kg")?,
-            speed_m_s: positive(src, speed_m_s, "speed_m_s")?,
+        MotionKind::FreeHeave => MotionSpec::FreeHeave {
+            mass_per_m_kg: need(&m.mass_per_m_kg, "mass_per_m_kg")?,
+            speed_m_s: need(&m.speed_m_s, "speed_m_s")?,
         },
     };
     let mut sensors = Vec::new();

@@ -9,7 +9,6 @@ use serde::Serialize;
 pub enum Stage {
     Sort,
     Boundary,
-    Gradient,
     Continuity,
     Momentum,
     Integrate,
@@ -22,7 +21,6 @@ pub enum Stage {
 pub struct Counters {
     pub sort_s: f64,
     pub boundary_s: f64,
-    pub gradient_s: f64,
     pub continuity_s: f64,
     pub momentum_s: f64,
     pub integrate_s: f64,
@@ -40,7 +38,6 @@ impl Counters {
         match stage {
             Stage::Sort => self.sort_s += s,
             Stage::Boundary => self.boundary_s += s,
-            Stage::Gradient => self.gradient_s += s,
             Stage::Continuity => self.continuity_s += s,
             Stage::Momentum => self.momentum_s += s,
             Stage::Integrate => self.integrate_s += s,
@@ -61,7 +58,6 @@ impl Counters {
     pub fn total_s(&self) -> f64 {
         self.sort_s
             + self.boundary_s
-            + self.gradient_s
             + self.continuity_s
             + self.momentum_s
             + self.integrate_s

@@ -1,12 +1,13 @@
-//! Cell-linked neighbour search on a uniform grid of cell size 2h (the kernel support).
+//! Cell-linked neighbour search on a uniform grid of cell size h (half the kernel support).
 //!
 //! Every time step the particles are counting-sorted by cell (row-major: cell = iz * ny + iy) and the
-//! structure-of-arrays storage is permuted into that order, so the three cells of a grid row that a particle
-//! must look at are one contiguous range of memory. The sort is stable, so the order (and with it every
+//! structure-of-arrays storage is permuted into that order, so the five cells of a grid row that a particle
+//! must look at are one contiguous range of memory. Cells of size h (5 x 5 cells searched) hold about 30 %
+//! fewer candidates outside the support than cells of size 2h (3 x 3 cells). The sort is stable, so the order (and with it every
 //! sum in the solver) is the same on any number of threads.
 //!
-//! With a symmetry plane (`mirror`), the grid starts at y = 0 and a particle in the first column also
-//! interacts with the mirror images (y -> -y) of the particles in the first column.
+//! With a symmetry plane (`mirror`), the grid starts at y = 0 and a particle in the first two columns also
+//! interacts with the mirror images (y -> -y) of the particles in the first columns.
 
 use std::ops::Range;
 
@@ -27,8 +28,8 @@ pub struct Grid {
 }
 
 impl Grid {
-    /// Grid covering y in [y0, y1], z in [z0, z1] with square cells of side `cell` (at least the kernel
-    /// support). Particles outside are put in the nearest boundary cell, which keeps the search correct
+    /// Grid covering y in [y0, y1], z in [z0, z1] with square cells of side `cell` (at least half the
+    /// kernel support). Particles outside are put in the nearest boundary cell, which keeps the search correct
     /// (only slower) for the few that fly out of the box.
     pub fn new(y0: f64, y1: f64, z0: f64, z1: f64, cell: f64, mirror: bool) -> Self {
         let ny = (((y1 - y0) / cell).ceil() as usize).max(1);
@@ -51,12 +52,12 @@ impl Grid {
         self.ny * self.nz
     }
 
+    /// Cell column and row of a point, clamped to the grid. Truncation toward zero equals floor for the
+    /// points inside, and points below the grid are clamped to the first cell either way.
     #[inline(always)]
     fn column_row(&self, y: f64, z: f64) -> (usize, usize) {
-        let iy = ((y - self.y0) * self.inv_cell).floor();
-        let iz = ((z - self.z0) * self.inv_cell).floor();
-        let iy = iy.clamp(0.0, (self.ny - 1) as f64) as usize;
-        let iz = iz.clamp(0.0, (self.nz - 1) as f64) as usize;
+        let iy = (((y - self.y0) * self.inv_cell) as isize).clamp(0, self.ny as isize - 1) as usize;
+        let iz = (((z - self.z0) * self.inv_cell) as isize).clamp(0, self.nz as isize - 1) as usize;
         (iy, iz)
     }
 
@@ -66,16 +67,18 @@ impl Grid {
         let n = y.len();
         self.cell_of.resize(n, 0);
         self.order.resize(n, 0);
-        let (ny, nz, y0, z0, inv) = (self.ny, self.nz, self.y0, self.z0, self.inv_cell);
-        self.cell_of
+        let ny = self.ny;
+        let mut cell_of = std::mem::take(&mut self.cell_of);
+        let this = &*self;
+        cell_of
             .par_iter_mut()
             .with_min_len(4096)
             .enumerate()
             .for_each(|(i, c)| {
-                let iy = ((y[i] - y0) * inv).floor().clamp(0.0, (ny - 1) as f64) as usize;
-                let iz = ((z[i] - z0) * inv).floor().clamp(0.0, (nz - 1) as f64) as usize;
+                let (iy, iz) = this.column_row(y[i], z[i]);
                 *c = (iz * ny + iy) as u32;
             });
+        self.cell_of = cell_of;
         let start = &mut self.cell_start;
         start.iter_mut().for_each(|s| *s = 0);
         for &c in &self.cell_of {
@@ -99,44 +102,41 @@ impl Grid {
         &self.order
     }
 
-    /// The three contiguous index ranges (rows iz-1, iz, iz+1, each over columns iy-1..=iy+1) that hold
-    /// every possible neighbour of a point, valid after [`Grid::sort`] and the permutation.
+    /// The five contiguous index ranges (rows iz-2..=iz+2, each over columns iy-2..=iy+2) that hold every
+    /// possible neighbour of a point, valid after [`Grid::sort`] and the permutation.
     #[inline(always)]
-    pub fn ranges(&self, y: f64, z: f64) -> [Range<usize>; 3] {
+    pub fn ranges(&self, y: f64, z: f64) -> [Range<usize>; 5] {
         let (iy, iz) = self.column_row(y, z);
-        let c0 = iy.saturating_sub(1);
-        let c1 = (iy + 1).min(self.ny - 1);
-        let mut out = [0..0, 0..0, 0..0];
-        for (k, dz) in [-1isize, 0, 1].into_iter().enumerate() {
-            let r = iz as isize + dz;
-            if r < 0 || r >= self.nz as isize {
-                continue;
-            }
-            let row = r as usize * self.ny;
+        let c0 = iy.saturating_sub(2);
+        let c1 = (iy + 2).min(self.ny - 1);
+        let mut out = [0..0, 0..0, 0..0, 0..0, 0..0];
+        let r0 = iz.saturating_sub(2);
+        let r1 = (iz + 2).min(self.nz - 1);
+        for (k, r) in (r0..=r1).enumerate() {
+            let row = r * self.ny;
             out[k] = self.cell_start[row + c0] as usize..self.cell_start[row + c1 + 1] as usize;
         }
         out
     }
 
-    /// Ranges whose mirror images (y -> -y) can be neighbours of a point: the first column, rows iz-1..=iz+1,
-    /// when the point itself lies in the first column of a grid with a symmetry plane; else empty.
+    /// Ranges whose mirror images (y -> -y) can be neighbours of a point in column iy < 2 of a grid with a
+    /// symmetry plane: columns 0..=1-iy, rows iz-2..=iz+2; else empty.
     #[inline(always)]
-    pub fn mirror_ranges(&self, y: f64, z: f64) -> [Range<usize>; 3] {
-        let mut out = [0..0, 0..0, 0..0];
+    pub fn mirror_ranges(&self, y: f64, z: f64) -> [Range<usize>; 5] {
+        let mut out = [0..0, 0..0, 0..0, 0..0, 0..0];
         if !self.mirror {
             return out;
         }
         let (iy, iz) = self.column_row(y, z);
-        if iy != 0 {
+        if iy >= 2 {
             return out;
         }
-        for (k, dz) in [-1isize, 0, 1].into_iter().enumerate() {
-            let r = iz as isize + dz;
-            if r < 0 || r >= self.nz as isize {
-                continue;
-            }
-            let row = r as usize * self.ny;
-            out[k] = self.cell_start[row] as usize..self.cell_start[row + 1] as usize;
+        let c1 = (1 - iy).min(self.ny - 1);
+        let r0 = iz.saturating_sub(2);
+        let r1 = (iz + 2).min(self.nz - 1);
+        for (k, r) in (r0..=r1).enumerate() {
+            let row = r * self.ny;
+            out[k] = self.cell_start[row] as usize..self.cell_start[row + c1 + 1] as usize;
         }
         out
     }
@@ -147,9 +147,17 @@ impl Grid {
     }
 }
 
+/// Neighbours gathered per batch before the closure runs on them.
+const BATCH: usize = 32;
+
 /// Visit every particle j within `support2` (squared support radius) of point (yi, zi), including mirror
 /// images. The closure gets (j, dy, dz, r2, mirrored) with (dy, dz) = r_i - r_j (r_j the image position when
 /// mirrored). Particle `skip` itself (not its image) is left out.
+///
+/// The candidates of the neighbouring cells are first filtered without branches into a small buffer (a
+/// candidate is written unconditionally and kept by advancing the count), then the closure runs over the
+/// buffer: this avoids a mispredicted branch for every candidate outside the support. The visiting order
+/// is the storage order, so sums do not depend on the thread count.
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
 pub fn for_each_neighbour<F: FnMut(usize, f64, f64, f64, bool)>(
@@ -162,25 +170,49 @@ pub fn for_each_neighbour<F: FnMut(usize, f64, f64, f64, bool)>(
     support2: f64,
     mut f: F,
 ) {
+    let mut idx = [0u32; BATCH];
+    let mut geo = [[0.0f64; 3]; BATCH];
+    let mut n = 0usize;
     for r in grid.ranges(yi, zi) {
-        for j in r {
-            let dy = yi - y[j];
-            let dz = zi - z[j];
+        let (ys, zs) = (&y[r.clone()], &z[r.clone()]);
+        for (k, (&yj, &zj)) in ys.iter().zip(zs).enumerate() {
+            let j = r.start + k;
+            let dy = yi - yj;
+            let dz = zi - zj;
             let r2 = dy * dy + dz * dz;
-            if r2 < support2 && j != skip {
-                f(j, dy, dz, r2, false);
+            idx[n] = j as u32;
+            geo[n] = [dy, dz, r2];
+            n += ((r2 < support2) & (j != skip)) as usize;
+            if n == BATCH {
+                for m in 0..n {
+                    f(idx[m] as usize, geo[m][0], geo[m][1], geo[m][2], false);
+                }
+                n = 0;
             }
         }
     }
+    for m in 0..n {
+        f(idx[m] as usize, geo[m][0], geo[m][1], geo[m][2], false);
+    }
+    n = 0;
     for r in grid.mirror_ranges(yi, zi) {
         for j in r {
             let dy = yi + y[j];
             let dz = zi - z[j];
             let r2 = dy * dy + dz * dz;
-            if r2 < support2 {
-                f(j, dy, dz, r2, true);
+            idx[n] = j as u32;
+            geo[n] = [dy, dz, r2];
+            n += (r2 < support2) as usize;
+            if n == BATCH {
+                for m in 0..n {
+                    f(idx[m] as usize, geo[m][0], geo[m][1], geo[m][2], true);
+                }
+                n = 0;
             }
         }
+    }
+    for m in 0..n {
+        f(idx[m] as usize, geo[m][0], geo[m][1], geo[m][2], true);
     }
 }
 
@@ -204,7 +236,7 @@ mod tests {
             z.push((s >> 11) as f64 / (1u64 << 53) as f64 - 0.5);
         }
         let support = 0.07;
-        let mut g = Grid::new(0.0, 1.0, -0.5, 0.5, support, true);
+        let mut g = Grid::new(0.0, 1.0, -0.5, 0.5, 0.5 * support, true);
         let order = g.sort(&y, &z).to_vec();
         let ys: Vec<f64> = order.iter().map(|&k| y[k as usize]).collect();
         let zs: Vec<f64> = order.iter().map(|&k| z[k as usize]).collect();

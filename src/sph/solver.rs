@@ -131,7 +131,7 @@ impl Simulation {
             tank.half_width + l,
             -tank.depth - l,
             top,
-            kernel.support(),
+            kernel.h(),
             mirror,
         );
         let history = History::new(&sensors, setup.expected_steps());
@@ -193,20 +193,19 @@ impl Simulation {
         [0.0, -self.body.a_down]
     }
 
-    /// Continuity pass at the current positions: density gradients and density rates.
+    /// Continuity pass at the current positions: density rates (with the density gradients of the last
+    /// momentum pass, which ran at these same positions and densities).
     fn evaluate_continuity(&mut self) {
         let (grid, kernel, mass) = (&self.grid, &self.kernel, self.mass);
         let pt = &mut self.pt;
-        self.counters.time(Stage::Gradient, || {
-            antuono2010::density_gradients(grid, pt, kernel, mass)
-        });
         let s = &self.setup;
         self.counters.time(Stage::Continuity, || {
             continuity_rates(grid, pt, kernel, mass, s)
         });
     }
 
-    /// Momentum pass at the current positions: wall and body pressures, then accelerations.
+    /// Momentum pass at the current positions: wall and body pressures, then accelerations and the
+    /// renormalised density gradients.
     fn evaluate_momentum(&mut self) {
         let (grid, kernel, eos, mass, g) =
             (&self.grid, &self.kernel, &self.eos, self.mass, self.setup.g);
@@ -514,7 +513,8 @@ fn continuity_rates(grid: &Grid, pt: &mut Particles, kernel: &WendlandC2, mass: 
     pt.rate = out;
 }
 
-/// Acceleration of every fluid particle into `rate[i][0..2]`; returns the number of pair interactions.
+/// Acceleration of every fluid particle into `rate[i][0..2]` and its renormalised density gradient into
+/// `grad_rho[i]`; returns the number of pair interactions.
 fn momentum_rates(
     grid: &Grid,
     pt: &mut Particles,
@@ -527,20 +527,24 @@ fn momentum_rates(
     let eps2 = 0.01 * h * h;
     let g = s.g;
     let mut out = std::mem::take(&mut pt.rate);
+    let mut grad = std::mem::take(&mut pt.grad_rho);
     let n = {
         let pt: &Particles = pt;
         out.par_iter_mut()
+            .zip(grad.par_iter_mut())
             .with_min_len(256)
             .enumerate()
-            .map(|(i, out)| {
+            .map(|(i, (out, grad))| {
                 if pt.kind[i] != Kind::Fluid {
                     out[0] = 0.0;
                     out[1] = 0.0;
+                    *grad = [0.0; 2];
                     return 0u64;
                 }
                 let (yi, zi, vyi, vzi) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i]);
                 let (rho_i, p_i) = (pt.rho[i], pt.p[i]);
                 let (mut ay, mut az, mut vy_acc, mut vz_acc) = (0.0, 0.0, 0.0, 0.0);
+                let mut sums = antuono2010::GradientSums::default();
                 let mut count = 0u64;
                 for_each_neighbour(
                     grid,
@@ -552,10 +556,12 @@ fn momentum_rates(
                     kernel.support2(),
                     |j, dy, dz, r2, mirrored| {
                         count += 1;
-                        let fw = kernel.grad_factor(r2.sqrt()) * mass / pt.rho[j];
+                        let rho_j = pt.rho[j];
+                        let fw = kernel.grad_factor(r2.sqrt()) * mass / rho_j;
                         let pf = (p_i + pt.p[j]) * fw;
                         ay -= pf * dy;
                         az -= pf * dz;
+                        sums.add(fw, dy, dz, rho_j - rho_i);
                         if pt.kind[j] == Kind::Fluid {
                             let vyj = if mirrored { -pt.vy[j] } else { pt.vy[j] };
                             let vdotd = (vyi - vyj) * dy + (vzi - pt.vz[j]) * dz;
@@ -568,10 +574,12 @@ fn momentum_rates(
                 let inv_rho = 1.0 / rho_i;
                 out[0] = (ay + visc * vy_acc) * inv_rho;
                 out[1] = (az + visc * vz_acc) * inv_rho - g;
+                *grad = sums.gradient();
                 count
             })
             .sum()
     };
+    pt.grad_rho = grad;
     pt.rate = out;
     n
 }

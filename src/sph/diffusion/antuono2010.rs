@@ -16,60 +16,47 @@
 //! Where L_i is close to singular (a particle with very few neighbours in the spray), the uncorrected
 //! gradient is used.
 
-use rayon::prelude::*;
-
-use crate::sph::kernel::WendlandC2;
-use crate::sph::neighbours::{Grid, for_each_neighbour};
-use crate::sph::particles::{Kind, Particles};
-
 /// Smallest determinant of the renormalisation matrix (which is the identity in a full kernel support)
 /// for which the renormalisation is applied.
 const MIN_DET: f64 = 0.05;
 
-/// Compute the renormalised density gradient of every fluid particle into `pt.grad_rho`.
-pub fn density_gradients(grid: &Grid, pt: &mut Particles, kernel: &WendlandC2, mass: f64) {
-    let mut out = std::mem::take(&mut pt.grad_rho);
-    {
-        let ptr: &Particles = pt;
-        out.par_iter_mut()
-            .with_min_len(512)
-            .enumerate()
-            .for_each(|(i, g)| {
-                if ptr.kind[i] != Kind::Fluid {
-                    *g = [0.0; 2];
-                    return;
-                }
-                let rho_i = ptr.rho[i];
-                let (mut m11, mut m12, mut m22, mut gy, mut gz) = (0.0, 0.0, 0.0, 0.0, 0.0);
-                for_each_neighbour(
-                    grid,
-                    &ptr.y,
-                    &ptr.z,
-                    ptr.y[i],
-                    ptr.z[i],
-                    i,
-                    kernel.support2(),
-                    |j, dy, dz, r2, _| {
-                        let rho_j = ptr.rho[j];
-                        let f = kernel.grad_factor(r2.sqrt()) * mass / rho_j;
-                        // grad_i W V_j = f (dy, dz); r_ji = -(dy, dz).
-                        m11 -= f * dy * dy;
-                        m12 -= f * dy * dz;
-                        m22 -= f * dz * dz;
-                        let d = rho_j - rho_i;
-                        gy += d * f * dy;
-                        gz += d * f * dz;
-                    },
-                );
-                let det = m11 * m22 - m12 * m12;
-                *g = if det > MIN_DET && det.is_finite() {
-                    [(m22 * gy - m12 * gz) / det, (m11 * gz - m12 * gy) / det]
-                } else {
-                    [gy, gz]
-                };
-            });
+/// Sums for the renormalised density gradient of one particle, accumulated over its neighbours (the
+/// solver does this inside its momentum pass, so the gradient costs no extra neighbour loop).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct GradientSums {
+    m11: f64,
+    m12: f64,
+    m22: f64,
+    gy: f64,
+    gz: f64,
+}
+
+impl GradientSums {
+    /// Add neighbour j: `fv` = F(r) V_j (so grad_i W_ij V_j = fv r_ij), r_ij = (dy, dz), `drho` = rho_j - rho_i.
+    #[inline(always)]
+    pub fn add(&mut self, fv: f64, dy: f64, dz: f64, drho: f64) {
+        // L^-1 = sum_j grad_i W_ij (x) r_ji V_j with r_ji = -(dy, dz).
+        self.m11 -= fv * dy * dy;
+        self.m12 -= fv * dy * dz;
+        self.m22 -= fv * dz * dz;
+        self.gy += drho * fv * dy;
+        self.gz += drho * fv * dz;
     }
-    pt.grad_rho = out;
+
+    /// The renormalised gradient L_i sum_j (rho_j - rho_i) grad_i W_ij V_j (uncorrected where L_i is near
+    /// singular).
+    #[inline(always)]
+    pub fn gradient(&self) -> [f64; 2] {
+        let det = self.m11 * self.m22 - self.m12 * self.m12;
+        if det > MIN_DET && det.is_finite() {
+            [
+                (self.m22 * self.gy - self.m12 * self.gz) / det,
+                (self.m11 * self.gz - self.m12 * self.gy) / det,
+            ]
+        } else {
+            [self.gy, self.gz]
+        }
+    }
 }
 
 /// psi_ij . grad_i W_ij for one pair, given F (grad_i W_ij = F r_ij), r_ij = (dy, dz), and the sum of the
