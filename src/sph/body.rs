@@ -80,6 +80,15 @@ impl Section {
         c
     }
 
+    /// The full contour closed by the straight line across the top (port deck edge back to the start).
+    /// Dummy particles line the whole of it, so a jet that rises past the deck edge cannot fall into the
+    /// body.
+    pub fn closed_contour(&self) -> Vec<[f64; 2]> {
+        let mut c = self.full_contour();
+        c.push(c[0]);
+        c
+    }
+
     /// Height of the section above the keel (m).
     pub fn height(&self) -> f64 {
         self.points.iter().map(|p| p[1]).fold(0.0, f64::max)
@@ -144,11 +153,12 @@ pub fn distance_to_polyline(c: &[[f64; 2]], y: f64, z: f64) -> f64 {
     d2.sqrt()
 }
 
-/// Body-frame positions of the dummy particles: `layers` layers at depths (k + 1/2) dp under the contour,
+/// Body-frame positions of the dummy particles: `layers` layers at depths (k + 1/2) dp under the closed
+/// contour,
 /// spaced dp along it, with corners filled from a dp lattice. Only points with y >= y_min are returned
 /// (y_min = dp/4 with a symmetry plane, so no particle sits on top of its own mirror image).
 pub fn dummy_points(section: &Section, dp: f64, layers: usize, y_min: f64) -> Vec<[f64; 2]> {
-    let c = section.full_contour();
+    let c = section.closed_contour();
     let depth = layers as f64 * dp;
     let mut pts: Vec<[f64; 2]> = Vec::new();
     let mut hash = SpatialHash::new(dp);
@@ -422,11 +432,11 @@ mod tests {
         let pts = dummy_points(&s, dp, 3, dp / 4.0);
         for p in &pts {
             assert!(s.contains(p[0], p[1]));
-            let d = distance_to_polyline(&s.full_contour(), p[0], p[1]);
+            let d = distance_to_polyline(&s.closed_contour(), p[0], p[1]);
             assert!(d <= 3.0 * dp + 1e-12);
         }
-        // Roughly three layers along the half contour (0.289 + 0.146 m long).
-        let expected = 3.0 * (0.2887 + 0.146) / dp;
+        // Roughly three layers along the half contour and half the top (0.289 + 0.146 + 0.25 m long).
+        let expected = 3.0 * (0.2887 + 0.146 + 0.25) / dp;
         let n = pts.len() as f64;
         assert!(
             n > 0.8 * expected && n < 1.2 * expected,

@@ -9,8 +9,8 @@
 //! * momentum (Antuono et al. 2010, eq. 2.2 with the artificial viscosity of Monaghan 1992 between fluid
 //!   particles; free slip at the walls):
 //!   D v_i / Dt = -sum_j (p_i + p_j)/rho_i grad_i W_ij V_j
-//!   + alpha h c0 rho0/rho_i sum_j pi_ij grad_i W_ij V_j + g,
-//!   with pi_ij = (v_i - v_j) . (r_i - r_j) / (|r_ij|^2 + 0.01 h^2)
+//!   + alpha h c0 rho0/rho_i sum_j pi_ij grad_i W_ij V_j + g;
+//! * artificial viscosity kernel: pi_ij = (v_i - v_j) . (r_i - r_j) / (|r_ij|^2 + 0.01 h^2);
 //! * equation of state: [`crate::sph::eos`]; wall pressure: [`crate::sph::boundary::adami2012`].
 //!
 //! Every sum is a gather over the neighbours of one particle in the fixed cell-sorted order, so the
@@ -405,7 +405,7 @@ impl Simulation {
         let dp = self.setup.dp;
         let zk = self.body.z_keel;
         let (hb, ht) = (sec.half_breadth(), sec.height());
-        let contour = sec.full_contour();
+        let contour = sec.closed_contour();
         let (count, deepest) = (0..self.pt.len())
             .into_par_iter()
             .with_min_len(4096)
