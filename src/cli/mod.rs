@@ -8,6 +8,8 @@ mod bench;
 mod completions;
 mod entry;
 mod hull;
+mod hull_generate;
+mod sea;
 
 /// 2D+t ship-slamming design tool: strip theory, SPH water entry, analytic cross-checks, design reports.
 #[derive(Debug, Parser)]
@@ -27,6 +29,9 @@ enum Command {
     Entry(entry::EntryCommand),
     /// SPH throughput benchmark (particle-steps per second).
     Bench(bench::BenchArgs),
+    /// Sea states: regular waves, spectra, speeds.
+    #[command(subcommand)]
+    Sea(sea::SeaCommand),
     /// Print a shell completion script.
     Completions(completions::CompletionsArgs),
     /// Print the manual page (roff) on stdout.
@@ -39,6 +44,7 @@ pub fn main() -> ExitCode {
         Command::Hull(c) => hull::run(c),
         Command::Entry(c) => entry::run(c),
         Command::Bench(a) => bench::run(a),
+        Command::Sea(c) => sea::run(c),
         Command::Completions(a) => completions::run(a, &mut Cli::command()),
         Command::Man => completions::man(&Cli::command()),
     };

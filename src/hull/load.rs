@@ -1,0 +1,344 @@
+//! Turning a parsed `hull.toml` into a validated [`Hull`], with every error located in its file.
+
+use std::collections::HashSet;
+
+use toml::Spanned;
+
+use super::schema::{HullFile, LoadingRaw, SensorRaw, StationRaw};
+use super::validate::check_section;
+use super::{
+    Hull, LoadingCondition, Section, SectionInterpolator, Sensor, Station, offsets_csv, station_x,
+};
+use crate::error::{Error, InputError, Result};
+use crate::input::{SourceText, finite, in_range, positive};
+
+/// Water density accepted as physical, kg/m³ (fresh water at 40 °C to brine-rich sea water).
+const RHO_RANGE: (f64, f64) = (990.0, 1050.0);
+
+pub(crate) fn hull_from_source(src: &SourceText) -> Result<Hull> {
+    let raw: HullFile = src.parse_toml()?;
+    let lpp = positive(src, &raw.lpp_m, "lpp_m")?;
+
+    let stations = match (&raw.station, &raw.offsets_csv) {
+        (Some(st), None) => stations_from_toml(src, lpp, st)?,
+        (None, Some(csv)) => offsets_csv::read_stations(src, lpp, csv)?,
+        (Some(st), Some(_)) => {
+            return Err(src
+                .error(
+                    st,
+                    "give the offsets either as [[station]] tables or as [offsets_csv], not both",
+                )
+                .into());
+        }
+        (None, None) => {
+            return Err(src
+                .error_at(
+                    0..0,
+                    "no offsets: add [[station]] tables or an [offsets_csv] table",
+                )
+                .into());
+        }
+    };
+
+    let top = stations
+        .iter()
+        .map(|s| s.section.deck_z())
+        .fold(f64::NEG_INFINITY, f64::max);
+    let depth = match &raw.depth_m {
+        Some(d) => positive(src, d, "depth_m")?,
+        None => top,
+    };
+
+    let loadings = loadings(src, lpp, depth, &raw.loading)?;
+    let mut hull = Hull {
+        name: raw.name.clone(),
+        description: raw.description.clone(),
+        lpp,
+        depth,
+        interpolator: SectionInterpolator::new(&stations),
+        stations,
+        loadings,
+        sensors: Vec::new(),
+        source: src.path.clone(),
+    };
+    for l in &raw.loading.get_ref()[..] {
+        check_immersed(src, &hull, l)?;
+    }
+    let mut names = HashSet::new();
+    for s in &raw.sensor {
+        let sensor = sensor(src, &hull, s)?;
+        if !names.insert(sensor.name.clone()) {
+            return Err(src
+                .error(
+                    &s.get_ref().name,
+                    format!("sensor name '{}' is used twice", sensor.name),
+                )
+                .into());
+        }
+        hull.sensors.push(sensor);
+    }
+    Ok(hull)
+}
+
+/// Exactly one of `x_m` / `aft_of_fp`, turned into x from midship.
+pub(crate) fn position(
+    src: &SourceText,
+    lpp: f64,
+    table: &Spanned<impl Sized>,
+    x_m: &Option<Spanned<f64>>,
+    aft_of_fp: &Option<Spanned<f64>>,
+) -> Result<f64, InputError> {
+    match (x_m, aft_of_fp) {
+        (Some(x), None) => in_range(src, x, -1.5 * lpp, 1.5 * lpp, "x_m"),
+        (None, Some(f)) => Ok(station_x(lpp, in_range(src, f, -0.5, 1.5, "aft_of_fp")?)),
+        (Some(x), Some(_)) => Err(src.error(x, "give either x_m or aft_of_fp, not both")),
+        (None, None) => Err(src.error(table, "missing position: give x_m or aft_of_fp")),
+    }
+}
+
+fn stations_from_toml(
+    src: &SourceText,
+    lpp: f64,
+    raw: &Spanned<Vec<Spanned<StationRaw>>>,
+) -> Result<Vec<Station>> {
+    if raw.get_ref().len() < 2 {
+        return Err(src.error(raw, "a hull needs at least two stations").into());
+    }
+    let mut out = Vec::with_capacity(raw.get_ref().len());
+    for st in raw.get_ref() {
+        let s = st.get_ref();
+        let x = position(src, lpp, st, &s.x_m, &s.aft_of_fp)?;
+        let points: Vec<[f64; 2]> = s.points.get_ref().iter().map(|p| *p.get_ref()).collect();
+        check_section(&points).map_err(|(i, msg)| {
+            if s.points.get_ref().is_empty() {
+                src.error(&s.points, msg)
+            } else {
+                src.error(&s.points.get_ref()[i.min(points.len() - 1)], msg)
+            }
+        })?;
+        out.push((x, points, st.span()));
+    }
+    order_stations(out, |span, msg| src.error_at(span, msg).into())
+}
+
+/// Stations must run monotonically (aft to forward, or forward to aft as the slamming literature lists
+/// them); the result is sorted aft to forward.
+pub(crate) fn order_stations<L: Clone>(
+    mut stations: Vec<(f64, Vec<[f64; 2]>, L)>,
+    err: impl Fn(L, String) -> Error,
+) -> Result<Vec<Station>> {
+    let ascending = stations.len() < 2 || stations[1].0 > stations[0].0;
+    for k in 1..stations.len() {
+        let (prev, cur) = (stations[k - 1].0, stations[k].0);
+        let ok = if ascending { cur > prev } else { cur < prev };
+        if !ok {
+            let dir = if ascending {
+                "aft to forward"
+            } else {
+                "forward to aft"
+            };
+            return Err(err(
+                stations[k].2.clone(),
+                format!(
+                    "stations out of order: x = {cur:.4} m after x = {prev:.4} m, but the first stations run {dir} (each station must be strictly further in that direction)"
+                ),
+            ));
+        }
+    }
+    if !ascending {
+        stations.reverse();
+    }
+    Ok(stations
+        .into_iter()
+        .map(|(x, points, _)| Station {
+            x,
+            section: Section::new(points),
+        })
+        .collect())
+}
+
+fn loadings(
+    src: &SourceText,
+    lpp: f64,
+    depth: f64,
+    raw: &Spanned<Vec<Spanned<LoadingRaw>>>,
+) -> Result<Vec<LoadingCondition>> {
+    if raw.get_ref().is_empty() {
+        return Err(src
+            .error(raw, "at least one [[loading]] condition is needed")
+            .into());
+    }
+    let mut names = HashSet::new();
+    let mut out = Vec::new();
+    for l in raw.get_ref() {
+        let r = l.get_ref();
+        let name = r.name.get_ref().trim().to_string();
+        if name.is_empty() {
+            return Err(src.error(&r.name, "loading name must not be empty").into());
+        }
+        if !names.insert(name.clone()) {
+            return Err(src
+                .error(&r.name, format!("loading name '{name}' is used twice"))
+                .into());
+        }
+        let draft_fp = positive(src, &r.draft_fp_m, "draft_fp_m")?;
+        let draft_ap = positive(src, &r.draft_ap_m, "draft_ap_m")?;
+        for (d, v) in [(&r.draft_fp_m, draft_fp), (&r.draft_ap_m, draft_ap)] {
+            if v > depth {
+                return Err(src
+                    .error(
+                        d,
+                        format!("draft {v} m is above the deck (depth {depth} m)"),
+                    )
+                    .into());
+            }
+        }
+        let rho = match &r.water_density_kg_m3 {
+            Some(v) => in_range(src, v, RHO_RANGE.0, RHO_RANGE.1, "water_density_kg_m3")?,
+            None => 1025.0,
+        };
+        let displacement_kg = match &r.displacement_kg {
+            Some(v) => Some(positive(src, v, "displacement_kg")?),
+            None => None,
+        };
+        let lcg = match &r.lcg_m {
+            Some(v) => Some(in_range(src, v, -0.5 * lpp, 0.5 * lpp, "lcg_m")?),
+            None => None,
+        };
+        let kg = positive(src, &r.kg_m, "kg_m")?;
+        if kg > 2.0 * depth {
+            return Err(src
+                .error(
+                    &r.kg_m,
+                    format!("kg_m = {kg} m is more than twice the depth ({depth} m)"),
+                )
+                .into());
+        }
+        let k_yy = match (&r.k_yy_m, &r.k_yy_over_lpp) {
+            (Some(k), None) => in_range(src, k, 1e-9, 0.5 * lpp, "k_yy_m")?,
+            (None, Some(f)) => in_range(src, f, 1e-9, 0.5, "k_yy_over_lpp")? * lpp,
+            (Some(k), Some(_)) => {
+                return Err(src
+                    .error(k, "give either k_yy_m or k_yy_over_lpp, not both")
+                    .into());
+            }
+            (None, None) => {
+                return Err(src
+                    .error(
+                        l,
+                        "missing pitch radius of gyration: give k_yy_m or k_yy_over_lpp",
+                    )
+                    .into());
+            }
+        };
+        out.push(LoadingCondition {
+            name,
+            draft_fp,
+            draft_ap,
+            rho,
+            displacement_kg,
+            lcg,
+            kg,
+            k_yy,
+        });
+    }
+    Ok(out)
+}
+
+fn check_immersed(src: &SourceText, hull: &Hull, raw: &Spanned<LoadingRaw>) -> Result<()> {
+    let name = raw.get_ref().name.get_ref().trim();
+    let l = hull.loading(Some(name))?;
+    let hs = super::Hydrostatics::compute(hull, l);
+    if hs.volume <= 0.0 {
+        return Err(src
+            .error(
+                &raw.get_ref().draft_fp_m,
+                format!("loading '{name}': the hull is not immersed at these drafts (keel above the waterline everywhere)"),
+            )
+            .into());
+    }
+    Ok(())
+}
+
+fn sensor(src: &SourceText, hull: &Hull, s: &Spanned<SensorRaw>) -> Result<Sensor> {
+    let r = s.get_ref();
+    let name = r.name.get_ref().trim().to_string();
+    if name.is_empty() {
+        return Err(src.error(&r.name, "sensor name must not be empty").into());
+    }
+    let x = position(src, hull.lpp, s, &r.x_m, &r.aft_of_fp)?;
+    let (xa, xf) = hull.x_range();
+    if x < xa - 1e-9 || x > xf + 1e-9 {
+        let at = r
+            .x_m
+            .as_ref()
+            .or(r.aft_of_fp.as_ref())
+            .expect("position given");
+        return Err(src
+            .error(
+                at,
+                format!(
+                    "sensor '{name}' at x = {x:.4} m is outside the offsets ({xa:.4} to {xf:.4} m)"
+                ),
+            )
+            .into());
+    }
+    let diameter = positive(src, &r.diameter_m, "diameter_m")?;
+    let section = hull.section_at(x)?;
+    let girth_total = section.girth();
+    let (girth, position) = match (&r.girth_m, &r.y_m, &r.z_m) {
+        (Some(g), None, None) => {
+            let g = in_range(src, g, 0.0, girth_total, "girth_m")?;
+            (g, section.point_at_girth(g))
+        }
+        (None, Some(y), Some(z)) => {
+            let q = [finite(src, y, "y_m")?, finite(src, z, "z_m")?];
+            let (g, dist) = section.project(q);
+            let allowed = (0.5 * diameter).max(1e-3);
+            if dist > allowed {
+                return Err(src
+                    .error(
+                        y,
+                        format!(
+                            "sensor '{name}' at (y, z) = ({}, {}) m is {:.1} mm off the section contour (allowed: {:.1} mm, half its diameter)",
+                            q[0],
+                            q[1],
+                            dist * 1e3,
+                            allowed * 1e3
+                        ),
+                    )
+                    .into());
+            }
+            (g, section.point_at_girth(g))
+        }
+        (None, Some(y), None) => {
+            return Err(src.error(y, "y_m needs z_m as well").into());
+        }
+        (None, None, Some(z)) => {
+            return Err(src.error(z, "z_m needs y_m as well").into());
+        }
+        (Some(g), _, _) => {
+            return Err(src
+                .error(
+                    g,
+                    "give the sensor position either as girth_m or as y_m and z_m, not both",
+                )
+                .into());
+        }
+        (None, None, None) => {
+            return Err(src
+                .error(
+                    s,
+                    "missing sensor position on the section: give girth_m or y_m and z_m",
+                )
+                .into());
+        }
+    };
+    Ok(Sensor {
+        name,
+        x,
+        girth,
+        position,
+        diameter,
+    })
+}
