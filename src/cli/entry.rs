@@ -13,6 +13,25 @@ pub enum EntryCommand {
     Wedge(WedgeArgs),
     /// A case file (TOML) with full control of section, motion, resolution and numerics.
     Case(CaseArgs),
+    /// A hull section (from a hull file) entering calm water at constant speed, keel first.
+    Section(SectionArgs),
+}
+
+#[derive(Debug, Args)]
+pub struct SectionArgs {
+    /// The hull file.
+    hull: PathBuf,
+    /// Station as a fraction of Lpp aft of the forward perpendicular (0.1 is x = 0.4 Lpp).
+    #[arg(long, conflicts_with = "x")]
+    station: Option<f64>,
+    /// Station as x (m from midship, positive forward).
+    #[arg(long)]
+    x: Option<f64>,
+    /// Constant entry speed (m/s).
+    #[arg(long)]
+    speed: f64,
+    #[command(flatten)]
+    common: Common,
 }
 
 /// Options shared by every entry run.
@@ -77,6 +96,7 @@ pub fn run(c: EntryCommand) -> slamtool::Result<()> {
     match c {
         EntryCommand::Wedge(a) => wedge(a),
         EntryCommand::Case(a) => case(a),
+        EntryCommand::Section(a) => hull_section(a),
     }
 }
 
@@ -124,6 +144,51 @@ fn wedge(a: WedgeArgs) -> slamtool::Result<()> {
         })
         .collect();
     let name = format!("wedge_{}deg_{}ms", a.deadrise_deg, a.speed);
+    let setup = sph::case::resolve(
+        &name,
+        &section,
+        &MotionSpec::Constant { speed_m_s: a.speed },
+        sensors,
+        &overrides(&a.common),
+    )?;
+    go(setup, &a.common, &name)
+}
+
+fn hull_section(a: SectionArgs) -> slamtool::Result<()> {
+    if !(a.speed.is_finite() && a.speed > 0.0) {
+        return Err(slamtool::Error::Invalid(format!(
+            "--speed must be a positive number, got {}",
+            a.speed
+        )));
+    }
+    let hull = slamtool::hull::Hull::from_file(&a.hull)?;
+    let x = match (a.station, a.x) {
+        (Some(f), None) => hull.station_x(f),
+        (None, Some(x)) => x,
+        _ => {
+            return Err(slamtool::Error::Invalid(
+                "give the station as --station (fraction of Lpp aft of the FP) or --x (m from midship)".into(),
+            ));
+        }
+    };
+    let hs = hull.section_at(x)?;
+    let section = Section::from_half_points(hs.points.clone())?;
+    // Hull sensors on this station: girth from the keel and physical diameter.
+    let sensors: Vec<SensorSpec> = hull
+        .sensors
+        .iter()
+        .filter(|s| (s.x - x).abs() < 1e-6)
+        .map(|s| SensorSpec {
+            name: s.name.clone(),
+            s_m: s.girth,
+            width_m: s.diameter,
+        })
+        .collect();
+    let stem = a
+        .hull
+        .file_stem()
+        .map_or("hull".into(), |s| s.to_string_lossy().into_owned());
+    let name = format!("{stem}_x{x:.3}m_{}ms", a.speed);
     let setup = sph::case::resolve(
         &name,
         &section,
