@@ -24,6 +24,11 @@ pub struct Particles {
     /// Density (kg/m3): integrated for fluid, from the extrapolated pressure for dummies.
     pub rho: Vec<f64>,
     pub kind: Vec<Kind>,
+    /// Mass (kg per metre): rho dp^2 with the initial (hydrostatic) density, so that every particle starts
+    /// with the volume dp^2 of its lattice cell.
+    pub mass: Vec<f64>,
+    /// Volume m / rho (fluid) or dp^2 (dummies), refreshed with the pressures every step.
+    pub vol: Vec<f64>,
     /// Pressure (Pa): equation of state for fluid, extrapolated (Adami et al. 2012) for dummies.
     pub p: Vec<f64>,
     /// Time derivatives of (vy, vz, rho) of fluid particles.
@@ -45,13 +50,25 @@ impl Particles {
 
     /// Add one particle.
     #[allow(clippy::too_many_arguments)]
-    pub fn push(&mut self, kind: Kind, y: f64, z: f64, vy: f64, vz: f64, rho: f64, p: f64) {
+    pub fn push(
+        &mut self,
+        kind: Kind,
+        y: f64,
+        z: f64,
+        vy: f64,
+        vz: f64,
+        rho: f64,
+        p: f64,
+        vol: f64,
+    ) {
         self.y.push(y);
         self.z.push(z);
         self.vy.push(vy);
         self.vz.push(vz);
         self.rho.push(rho);
         self.kind.push(kind);
+        self.mass.push(rho * vol);
+        self.vol.push(vol);
         self.p.push(p);
         self.rate.push([0.0; 3]);
         self.grad_rho.push([0.0; 2]);
@@ -63,7 +80,8 @@ impl Particles {
     }
 
     /// Reorder the state arrays so that new position k holds old particle `order[k]`. Rates and gradients
-    /// are recomputed after every sort and are not carried over.
+    /// are recomputed after every sort and are not carried over (volumes are, for the first pass after
+    /// the sort).
     pub fn permute(&mut self, order: &[u32]) {
         let n = self.len();
         self.scratch.resize(n, 0.0);
@@ -75,6 +93,8 @@ impl Particles {
             &mut self.vz,
             &mut self.rho,
             &mut self.p,
+            &mut self.mass,
+            &mut self.vol,
         ] {
             let src: &Vec<f64> = a;
             self.scratch
@@ -95,7 +115,7 @@ impl Particles {
 
     /// Bytes of particle storage per particle (state, rates, gradients and sort scratch).
     pub fn bytes_per_particle() -> usize {
-        // y z vy vz rho p + scratch: 7 f64; kind + scratch kind: 2 bytes; rate 3 f64; grad 2 f64.
-        7 * 8 + 2 + 3 * 8 + 2 * 8
+        // y z vy vz rho p mass vol + scratch: 9 f64; kind + scratch kind: 2 bytes; rate 3 f64; grad 2 f64.
+        9 * 8 + 2 + 3 * 8 + 2 * 8
     }
 }

@@ -61,8 +61,8 @@ pub struct Simulation {
     pub setup: Setup,
     pub kernel: WendlandC2,
     pub eos: Eos,
-    /// Particle mass (kg per metre of section).
-    pub mass: f64,
+    /// Volume of a dummy particle, dp^2 (m^2).
+    pub dummy_vol: f64,
     pub pt: Particles,
     grid: Grid,
     section: Option<Section>,
@@ -115,7 +115,7 @@ impl Simulation {
             body.a_down = mot.accel_at(0.0).unwrap_or(setup.g);
             let y_min = if mirror { 0.25 * dp } else { f64::NEG_INFINITY };
             for p in body::dummy_points(sec, dp, layers, y_min) {
-                pt.push(Kind::Body, p[0], p[1], 0.0, -v0, setup.rho0, 0.0);
+                pt.push(Kind::Body, p[0], p[1], 0.0, -v0, setup.rho0, 0.0, dp * dp);
             }
             contour = body::contour_points(sec, 0.5 * dp, !mirror);
         }
@@ -137,7 +137,7 @@ impl Simulation {
         let history = History::new(&sensors, setup.expected_steps());
         let n = contour.len();
         let mut sim = Self {
-            mass: setup.rho0 * dp * dp,
+            dummy_vol: dp * dp,
             kernel,
             eos,
             pt,
@@ -196,28 +196,32 @@ impl Simulation {
     /// Continuity pass at the current positions: density rates (with the density gradients of the last
     /// momentum pass, which ran at these same positions and densities).
     fn evaluate_continuity(&mut self) {
-        let (grid, kernel, mass) = (&self.grid, &self.kernel, self.mass);
+        let (grid, kernel) = (&self.grid, &self.kernel);
         let pt = &mut self.pt;
         let s = &self.setup;
-        self.counters.time(Stage::Continuity, || {
-            continuity_rates(grid, pt, kernel, mass, s)
-        });
+        self.counters
+            .time(Stage::Continuity, || continuity_rates(grid, pt, kernel, s));
     }
 
     /// Momentum pass at the current positions: wall and body pressures, then accelerations and the
     /// renormalised density gradients.
     fn evaluate_momentum(&mut self) {
-        let (grid, kernel, eos, mass, g) =
-            (&self.grid, &self.kernel, &self.eos, self.mass, self.setup.g);
+        let (grid, kernel, eos, vol, g) = (
+            &self.grid,
+            &self.kernel,
+            &self.eos,
+            self.dummy_vol,
+            self.setup.g,
+        );
         let acc = [0.0, -self.body.a_down];
         let pt = &mut self.pt;
         self.counters.time(Stage::Boundary, || {
-            adami2012::update_pressures(grid, pt, kernel, eos, mass, g, acc)
+            adami2012::update_pressures(grid, pt, kernel, eos, vol, g, acc)
         });
         let s = &self.setup;
-        let n = self.counters.time(Stage::Momentum, || {
-            momentum_rates(grid, pt, kernel, mass, s)
-        });
+        let n = self
+            .counters
+            .time(Stage::Momentum, || momentum_rates(grid, pt, kernel, s));
         self.counters.interactions += n;
     }
 
@@ -226,16 +230,10 @@ impl Simulation {
         let t0 = std::time::Instant::now();
         let acc = self.body_accel();
         let zk = self.body.z_keel;
-        let (grid, pt, kernel, eos, mass, g) = (
-            &self.grid,
-            &self.pt,
-            &self.kernel,
-            &self.eos,
-            self.mass,
-            self.setup.g,
-        );
+        let (grid, pt, kernel, eos, g) =
+            (&self.grid, &self.pt, &self.kernel, &self.eos, self.setup.g);
         let sample = |y: f64, z: f64| {
-            let (p, shepard) = adami2012::wall_pressure(grid, pt, kernel, eos, mass, g, y, z, acc);
+            let (p, shepard) = adami2012::wall_pressure(grid, pt, kernel, eos, g, y, z, acc);
             if shepard < DRY_SHEPARD { 0.0 } else { p }
         };
         self.contour_p
@@ -445,7 +443,6 @@ impl Simulation {
             &self.pt,
             &self.kernel,
             &self.eos,
-            self.mass,
             self.setup.g,
             y,
             z,
@@ -466,7 +463,7 @@ impl Simulation {
 }
 
 /// Density rate of every fluid particle (continuity with delta-SPH diffusion) into `rate[i][2]`.
-fn continuity_rates(grid: &Grid, pt: &mut Particles, kernel: &WendlandC2, mass: f64, s: &Setup) {
+fn continuity_rates(grid: &Grid, pt: &mut Particles, kernel: &WendlandC2, s: &Setup) {
     let delta_term = s.delta * kernel.h() * s.c0;
     let mut out = std::mem::take(&mut pt.rate);
     {
@@ -492,7 +489,7 @@ fn continuity_rates(grid: &Grid, pt: &mut Particles, kernel: &WendlandC2, mass: 
                     kernel.support2(),
                     |j, dy, dz, r2, mirrored| {
                         let rho_j = pt.rho[j];
-                        let fw = kernel.grad_factor(r2.sqrt()) * mass / rho_j;
+                        let fw = kernel.grad_factor(r2.sqrt()) * pt.vol[j];
                         let (vyj, gj) = if mirrored {
                             (-pt.vy[j], [-pt.grad_rho[j][0], pt.grad_rho[j][1]])
                         } else {
@@ -515,13 +512,7 @@ fn continuity_rates(grid: &Grid, pt: &mut Particles, kernel: &WendlandC2, mass: 
 
 /// Acceleration of every fluid particle into `rate[i][0..2]` and its renormalised density gradient into
 /// `grad_rho[i]`; returns the number of pair interactions.
-fn momentum_rates(
-    grid: &Grid,
-    pt: &mut Particles,
-    kernel: &WendlandC2,
-    mass: f64,
-    s: &Setup,
-) -> u64 {
+fn momentum_rates(grid: &Grid, pt: &mut Particles, kernel: &WendlandC2, s: &Setup) -> u64 {
     let h = kernel.h();
     let visc = s.alpha * h * s.c0 * s.rho0;
     let eps2 = 0.01 * h * h;
@@ -557,7 +548,7 @@ fn momentum_rates(
                     |j, dy, dz, r2, mirrored| {
                         count += 1;
                         let rho_j = pt.rho[j];
-                        let fw = kernel.grad_factor(r2.sqrt()) * mass / rho_j;
+                        let fw = kernel.grad_factor(r2.sqrt()) * pt.vol[j];
                         let pf = (p_i + pt.p[j]) * fw;
                         ay -= pf * dy;
                         az -= pf * dz;

@@ -17,7 +17,10 @@ pub struct Tank {
 
 impl Tank {
     /// Fill with fluid on a square lattice of spacing dp (cell centres) and add `layers` layers of wall
-    /// dummy particles. Pressures and densities are hydrostatic, p = rho0 g (-z).
+    /// dummy particles. Pressures and densities are hydrostatic, p = rho0 g (-z); each fluid particle's mass
+    /// is its initial density times dp^2, so the lattice is in equilibrium from the start (a uniform mass
+    /// rho0 dp^2 with hydrostatic densities gives particle volumes smaller than the lattice cells, and a
+    /// still tank then settles to a bottom pressure about rho g D (1 + rho0 g D / (rho0 c0^2)) too high).
     pub fn fill(
         &self,
         pt: &mut Particles,
@@ -36,7 +39,7 @@ impl Tank {
             let p = hydro(z);
             for i in y_start..ny {
                 let y = (i as f64 + 0.5) * dp;
-                pt.push(Kind::Fluid, y, z, 0.0, 0.0, eos.density(p), p);
+                pt.push(Kind::Fluid, y, z, 0.0, 0.0, eos.density(p), p, dp * dp);
             }
         }
         let l = layers as i64;
@@ -55,6 +58,7 @@ impl Tank {
                     0.0,
                     eos.density(p),
                     p,
+                    dp * dp,
                 );
             }
         }
@@ -72,6 +76,7 @@ impl Tank {
                     0.0,
                     eos.density(p),
                     p,
+                    dp * dp,
                 );
                 if !mirror {
                     pt.push(
@@ -82,6 +87,7 @@ impl Tank {
                         0.0,
                         eos.density(p),
                         p,
+                        dp * dp,
                     );
                 }
             }

@@ -24,7 +24,6 @@ pub fn wall_pressure(
     pt: &Particles,
     kernel: &WendlandC2,
     eos: &Eos,
-    mass: f64,
     g: f64,
     y: f64,
     z: f64,
@@ -49,7 +48,7 @@ pub fn wall_pressure(
             spw += eos.pressure(rho) * w;
             sry += rho * dy * w;
             srz += rho * dz * w;
-            shepard += mass / rho * w;
+            shepard += pt.mass[j] / rho * w;
         },
     );
     if sw <= 0.0 {
@@ -61,14 +60,15 @@ pub fn wall_pressure(
 
 /// Set the pressure of every particle: equation of state for fluid, extrapolation for dummies (wall
 /// acceleration zero for tank walls, `body_accel` for body particles). Then set the dummy densities from
-/// their pressures. Reads the fluid densities only, so the result does not depend on the visiting order.
+/// their pressures, and the volumes used in the sums: m / rho for fluid, the fixed lattice volume
+/// `dummy_vol` (dp^2) for dummies, whose layout does not compress. Reads the fluid densities only, so the result does not depend on the visiting order.
 #[allow(clippy::too_many_arguments)]
 pub fn update_pressures(
     grid: &Grid,
     pt: &mut Particles,
     kernel: &WendlandC2,
     eos: &Eos,
-    mass: f64,
+    dummy_vol: f64,
     g: f64,
     body_accel: [f64; 2],
 ) {
@@ -82,28 +82,30 @@ pub fn update_pressures(
                 *pi = match ptr.kind[i] {
                     Kind::Fluid => eos.pressure(ptr.rho[i]),
                     Kind::Wall => {
-                        wall_pressure(
-                            grid, ptr, kernel, eos, mass, g, ptr.y[i], ptr.z[i], [0.0; 2],
-                        )
-                        .0
+                        wall_pressure(grid, ptr, kernel, eos, g, ptr.y[i], ptr.z[i], [0.0; 2]).0
                     }
                     Kind::Body => {
-                        wall_pressure(
-                            grid, ptr, kernel, eos, mass, g, ptr.y[i], ptr.z[i], body_accel,
-                        )
-                        .0
+                        wall_pressure(grid, ptr, kernel, eos, g, ptr.y[i], ptr.z[i], body_accel).0
                     }
                 };
             });
     }
     pt.p = p;
-    let (rho, kind, p) = (&mut pt.rho, &pt.kind, &pt.p);
-    rho.par_iter_mut()
+    (
+        pt.rho.par_iter_mut(),
+        pt.vol.par_iter_mut(),
+        pt.kind.par_iter(),
+        pt.p.par_iter(),
+        pt.mass.par_iter(),
+    )
+        .into_par_iter()
         .with_min_len(4096)
-        .enumerate()
-        .for_each(|(i, r)| {
-            if kind[i] != Kind::Fluid {
-                *r = eos.density(p[i]);
+        .for_each(|(rho, vol, kind, p, m)| {
+            if *kind == Kind::Fluid {
+                *vol = m / *rho;
+            } else {
+                *rho = eos.density(*p);
+                *vol = dummy_vol;
             }
         });
 }
