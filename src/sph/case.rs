@@ -575,3 +575,51 @@ pub fn from_source(src: &SourceText) -> Result<Setup> {
     }
     Ok(setup)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse(text: &str) -> Result<Setup> {
+        from_source(&SourceText::from_string("case.toml", text))
+    }
+
+    #[test]
+    fn resolves_a_wedge_case_and_records_the_choices() {
+        let s = parse(
+            "[section]\nwedge = { deadrise_deg = 30.0, half_beam_m = 0.25 }\n\
+             [motion]\nkind = \"constant\"\nspeed_m_s = 2.0\n",
+        )
+        .unwrap();
+        // c0 from Wagner's Cp at 30 deg: 2 sqrt(7.40 / 0.02) = 38.5 m/s, above 10 sqrt(g 0.75) = 27.1 m/s.
+        assert!(
+            (s.c0 - 2.0 * (7.402f64 / 0.02).sqrt()).abs() < 0.05,
+            "{}",
+            s.c0
+        );
+        assert!((s.dp - 0.25 / 40.0).abs() < 1e-12);
+        // No sides above the chine: the run stops when the keel is 0.9 x the section height down.
+        assert!((s.t_end - 0.9 * 0.25 * 30f64.to_radians().tan() / 2.0).abs() < 1e-9);
+        assert!(s.notes.iter().any(|n| n.starts_with("c0 =")));
+    }
+
+    #[test]
+    fn errors_name_line_and_column() {
+        let e = parse(
+            "[section]\nwedge = { deadrise_deg = 30.0, half_beam_m = 0.25 }\n\
+             [motion]\nkind = \"free_heave\"\nspeed_m_s = 2.0\n",
+        )
+        .unwrap_err();
+        let m = e.to_string();
+        assert!(
+            m.starts_with("case.toml:4:8:") && m.contains("mass_per_m_kg"),
+            "{m}"
+        );
+        let e = parse(
+            "[section]\nwedge = { deadrise_deg = 95.0, half_beam_m = 0.25 }\n\
+             [motion]\nkind = \"constant\"\nspeed_m_s = 2.0\n",
+        )
+        .unwrap_err();
+        assert!(e.to_string().starts_with("case.toml:2:26:"), "{e}");
+    }
+}
