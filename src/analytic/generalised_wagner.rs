@@ -14,7 +14,6 @@
 //! valid (reported as `None`).
 
 use crate::numerics::Pchip;
-use crate::sph::body::Section;
 
 /// Wagner estimate along a time history.
 #[derive(Debug, Clone)]
@@ -27,9 +26,9 @@ pub struct WagnerEstimate {
 }
 
 /// Height of the body surface above the keel at half-breadth y (first crossing from the keel), or `None`
-/// above the widest point.
-fn surface_height(section: &Section, y: f64) -> Option<f64> {
-    for w in section.half_points().windows(2) {
+/// above the widest point. `half` is the starboard half of the section, keel first at (0, 0).
+fn surface_height(half: &[[f64; 2]], y: f64) -> Option<f64> {
+    for w in half.windows(2) {
         let (a, b) = (w[0], w[1]);
         if (a[0] <= y && y <= b[0]) && b[0] > a[0] {
             return Some(a[1] + (y - a[0]) / (b[0] - a[0]) * (b[1] - a[1]));
@@ -39,29 +38,30 @@ fn surface_height(section: &Section, y: f64) -> Option<f64> {
 }
 
 /// Penetration depth at which the wetted half-width is c (the Wagner condition), or `None` past the chine.
-pub fn penetration_for_half_width(section: &Section, c: f64) -> Option<f64> {
+pub fn penetration_for_half_width(half: &[[f64; 2]], c: f64) -> Option<f64> {
     let n = 64;
     let (x, w) = crate::numerics::quadrature::gauss_legendre(n);
     let half_pi = std::f64::consts::FRAC_PI_2;
     let mut s = 0.0;
     for k in 0..n {
         let theta = 0.5 * half_pi * (x[k] + 1.0);
-        s += 0.5 * half_pi * w[k] * surface_height(section, c * theta.sin())?;
+        s += 0.5 * half_pi * w[k] * surface_height(half, c * theta.sin())?;
     }
     Some(s / half_pi)
 }
 
-/// Wagner estimate for a section moving down with speed v(t) (sampled at times `t`, with the same `v`),
-/// density rho. Stops where the wetted half-width reaches the widest point of the section.
-pub fn estimate(section: &Section, t: &[f64], v: &[f64], rho: f64) -> WagnerEstimate {
-    let b = section.half_breadth();
+/// Wagner estimate for a section (starboard half `half`, keel first at (0, 0)) moving down with speed
+/// v(t) (sampled at times `t`, with the same `v`), density rho. Stops where the wetted half-width reaches
+/// the widest point of the section.
+pub fn estimate(half: &[[f64; 2]], t: &[f64], v: &[f64], rho: f64) -> WagnerEstimate {
+    let b = half.iter().map(|p| p[0]).fold(0.0, f64::max);
     // Table d(c) on a fine c grid, inverted to c(d).
     let m = 400;
     let mut cs = Vec::new();
     let mut ds = Vec::new();
     for k in 1..=m {
         let c = b * k as f64 / m as f64;
-        if let Some(d) = penetration_for_half_width(section, c) {
+        if let Some(d) = penetration_for_half_width(half, c) {
             if ds.last().is_none_or(|&last| d > last) {
                 cs.push(c);
                 ds.push(d);
@@ -114,7 +114,8 @@ mod tests {
     #[test]
     fn reproduces_the_wedge_formulas() {
         let beta = 30f64.to_radians();
-        let s = Section::wedge(beta, 0.25, 0.29).unwrap();
+        let zk = 0.25 * beta.tan();
+        let s = [[0.0, 0.0], [0.25, zk], [0.25, 0.29]];
         let t: Vec<f64> = (0..=100).map(|k| k as f64 * 1e-4).collect();
         let v = vec![5.0; t.len()];
         let e = estimate(&s, &t, &v, 1000.0);

@@ -561,7 +561,7 @@ pub fn from_source(src: &SourceText) -> Result<Setup> {
     // Sensor positions are checked against the contour here so the error can point at the file.
     let len = crate::sph::body::half_contour_length(&section);
     for (s, spec) in f.sensor.iter().zip(&setup.sensors) {
-        if spec.s_m - 0.5 * spec.width_m < 0.0 || spec.s_m + 0.5 * spec.width_m > len {
+        if !spec.fits(len) {
             return Err(src
                 .error(
                     &s.s_m,

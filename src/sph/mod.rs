@@ -227,7 +227,7 @@ fn summarise_run(sim: &Simulation, wall_s: f64, stopped: Option<String>) -> Resu
         .unwrap_or(0);
     let (mut wf, mut wft, mut wp) = (None, None, None);
     if let Some(sec) = sim.section() {
-        let e = generalised_wagner::estimate(sec, &h.t, &h.v_down, s.rho0);
+        let e = generalised_wagner::estimate(sec.half_points(), &h.t, &h.v_down, s.rho0);
         if let Some(k) = (0..e.t.len()).max_by(|&a, &b| e.force[a].total_cmp(&e.force[b])) {
             wf = Some(e.force[k]);
             wft = Some(e.t[k]);

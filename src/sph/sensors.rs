@@ -22,6 +22,15 @@ pub struct SensorSpec {
     pub width_m: f64,
 }
 
+impl SensorSpec {
+    /// Whether the sensor lies on a starboard contour `len` long (m), with a positive width.
+    pub fn fits(&self, len: f64) -> bool {
+        self.width_m > 0.0
+            && self.s_m - 0.5 * self.width_m >= 0.0
+            && self.s_m + 0.5 * self.width_m <= len
+    }
+}
+
 /// Sensors with their sample points (body frame).
 #[derive(Debug, Clone, Default)]
 pub struct SensorSet {
@@ -43,9 +52,7 @@ impl SensorSet {
         };
         let len = body::half_contour_length(sec);
         for (k, s) in specs.iter().enumerate() {
-            let lo = s.s_m - 0.5 * s.width_m;
-            let fits = s.width_m > 0.0 && lo >= 0.0 && s.s_m + 0.5 * s.width_m <= len;
-            if !fits {
+            if !s.fits(len) {
                 return Err(Error::Invalid(format!(
                     "sensor '{}' (centre {} m, width {} m along the contour) must lie on the starboard \
                      contour, which is {:.4} m long from the keel",

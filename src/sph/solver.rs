@@ -451,7 +451,7 @@ impl Simulation {
         .0
     }
 
-    /// Shapes that the sensor table needs.
+    /// The pressure sensors of this run.
     pub fn sensors(&self) -> &SensorSet {
         &self.sensors
     }
