@@ -12,6 +12,8 @@ use crate::numerics::Pchip;
 pub struct Section {
     /// Starboard half, keel first: (y >= 0, z), body frame, keel at (0, 0).
     points: Vec<[f64; 2]>,
+    /// Full open contour, port deck edge through the keel to the starboard deck edge.
+    full: Vec<[f64; 2]>,
 }
 
 impl Section {
@@ -64,7 +66,9 @@ impl Section {
         if points.len() < 2 || points.iter().all(|p| p[0] == 0.0) {
             return Err(Error::Invalid("the section has no breadth".into()));
         }
-        Ok(Self { points })
+        let mut full: Vec<[f64; 2]> = points.iter().rev().map(|p| [-p[0], p[1]]).collect();
+        full.extend_from_slice(&points[1..]); // points[0] is on the centre line
+        Ok(Self { points, full })
     }
 
     /// Starboard half, keel first.
@@ -73,18 +77,15 @@ impl Section {
     }
 
     /// Full open contour from the port deck edge through the keel to the starboard deck edge.
-    pub fn full_contour(&self) -> Vec<[f64; 2]> {
-        let mut c: Vec<[f64; 2]> = self.points.iter().rev().map(|p| [-p[0], p[1]]).collect();
-        let start = if self.points[0][0] == 0.0 { 1 } else { 0 };
-        c.extend_from_slice(&self.points[start..]);
-        c
+    pub fn full_contour(&self) -> &[[f64; 2]] {
+        &self.full
     }
 
     /// The full contour closed by the straight line across the top (port deck edge back to the start).
     /// Dummy particles line the whole of it, so a jet that rises past the deck edge cannot fall into the
     /// body.
     pub fn closed_contour(&self) -> Vec<[f64; 2]> {
-        let mut c = self.full_contour();
+        let mut c = self.full.clone();
         c.push(c[0]);
         c
     }
@@ -118,7 +119,7 @@ impl Section {
 
     /// Whether a body-frame point lies inside the closed section (even-odd rule).
     pub fn contains(&self, y: f64, z: f64) -> bool {
-        let c = self.full_contour();
+        let c = &self.full;
         let n = c.len();
         let mut inside = false;
         for i in 0..n {

@@ -69,6 +69,8 @@ pub struct Simulation {
     motion: Option<Motion>,
     contour: Vec<ContourPoint>,
     contour_p: Vec<f64>,
+    /// The closed section contour (body frame), for the check that no fluid went through the body.
+    closed_contour: Vec<[f64; 2]>,
     sensors: SensorSet,
     pub body: BodyState,
     pub time: f64,
@@ -136,6 +138,7 @@ impl Simulation {
         );
         let history = History::new(&sensors, setup.expected_steps());
         let n = contour.len();
+        let closed_contour = section.as_ref().map_or(Vec::new(), |s| s.closed_contour());
         let mut sim = Self {
             dummy_vol: dp * dp,
             kernel,
@@ -146,6 +149,7 @@ impl Simulation {
             motion,
             contour,
             contour_p: vec![0.0; n],
+            closed_contour,
             sensors,
             body,
             time: 0.0,
@@ -403,7 +407,7 @@ impl Simulation {
         let dp = self.setup.dp;
         let zk = self.body.z_keel;
         let (hb, ht) = (sec.half_breadth(), sec.height());
-        let contour = sec.closed_contour();
+        let contour = &self.closed_contour;
         let (count, deepest) = (0..self.pt.len())
             .into_par_iter()
             .with_min_len(4096)
@@ -415,7 +419,7 @@ impl Simulation {
                 if y.abs() > hb || z < 0.0 || z > ht || !sec.contains(y, z) {
                     return (0, 0.0);
                 }
-                let d = body::distance_to_polyline(&contour, y, z);
+                let d = body::distance_to_polyline(contour, y, z);
                 if d > 2.0 * dp { (1, d) } else { (0, 0.0) }
             })
             .reduce(|| (0, 0.0), |a, b| (a.0 + b.0, a.1.max(b.1)));
