@@ -171,49 +171,45 @@ pub fn for_each_neighbour<F: FnMut(usize, f64, f64, f64, bool)>(
     mut f: F,
 ) {
     let mut idx = [0u32; BATCH];
-    let mut geo = [[0.0f64; 3]; BATCH];
     let mut n = 0usize;
+    // Candidates are filtered into `idx` without branches; distances are recomputed for the few kept.
+    let mut flush = |idx: &[u32], mirrored: bool| {
+        for &j in idx {
+            let j = j as usize;
+            let dy = if mirrored { yi + y[j] } else { yi - y[j] };
+            let dz = zi - z[j];
+            f(j, dy, dz, dy * dy + dz * dz, mirrored);
+        }
+    };
     for r in grid.ranges(yi, zi) {
         let (ys, zs) = (&y[r.clone()], &z[r.clone()]);
         for (k, (&yj, &zj)) in ys.iter().zip(zs).enumerate() {
             let j = r.start + k;
             let dy = yi - yj;
             let dz = zi - zj;
-            let r2 = dy * dy + dz * dz;
             idx[n] = j as u32;
-            geo[n] = [dy, dz, r2];
-            n += ((r2 < support2) & (j != skip)) as usize;
+            n += ((dy * dy + dz * dz < support2) & (j != skip)) as usize;
             if n == BATCH {
-                for m in 0..n {
-                    f(idx[m] as usize, geo[m][0], geo[m][1], geo[m][2], false);
-                }
+                flush(&idx, false);
                 n = 0;
             }
         }
     }
-    for m in 0..n {
-        f(idx[m] as usize, geo[m][0], geo[m][1], geo[m][2], false);
-    }
+    flush(&idx[..n], false);
     n = 0;
     for r in grid.mirror_ranges(yi, zi) {
         for j in r {
             let dy = yi + y[j];
             let dz = zi - z[j];
-            let r2 = dy * dy + dz * dz;
             idx[n] = j as u32;
-            geo[n] = [dy, dz, r2];
-            n += (r2 < support2) as usize;
+            n += (dy * dy + dz * dz < support2) as usize;
             if n == BATCH {
-                for m in 0..n {
-                    f(idx[m] as usize, geo[m][0], geo[m][1], geo[m][2], true);
-                }
+                flush(&idx, true);
                 n = 0;
             }
         }
     }
-    for m in 0..n {
-        f(idx[m] as usize, geo[m][0], geo[m][1], geo[m][2], true);
-    }
+    flush(&idx[..n], true);
 }
 
 #[cfg(test)]
