@@ -388,11 +388,15 @@ fn zhao_peak(r: &sph::RunResult) -> (f64, f64) {
 /// * 15 particles over the half-beam: 10690 N at 7.6 ms (+61 %);
 /// * 25 particles (this test): 9740 N at 12.9 ms (+46 %; the filtered coarse force has two humps of
 ///   similar height, at 12.9 and 14.6 ms); tolerance 55 % and 3 ms;
-/// * 40 particles (`zhao1996_prescribed_fine`): 8480 N at 14.65 ms (+28 %); tolerance 30 % and 2 ms.
+/// * 40 particles (`zhao1996_prescribed_fine`): 8480 N at 14.65 ms (+28 %); tolerance 30 % and 2 ms;
+/// * 80 particles (`zhao1996_prescribed_80`, 77,000 fluid particles, 14 min on 2 shared cores):
+///   6780 N at 16.0 ms (+1.9 %; measured rig force 5150 N: SPH +32 %); tolerance 10 % (the issue's
+///   target) and 2 ms.
 ///
-/// The target (within 10 % of the BEM) is NOT met at these resolutions. The filtered peak is
-/// also sensitive to small changes of the wall treatment at 40 particles: with dummy volumes m/rho_w
-/// instead of dp^2 it was 7250 N (+9 %), so read these as +-15 %.
+/// The coarse overshoot comes mostly from the early impact: the body meets the water through the kernel
+/// support (2h) before the contours touch, which shrinks with dp. At 40 particles the filtered peak is
+/// also sensitive to small changes of the wall treatment (7250 N with dummy volumes m/rho_w instead of
+/// dp^2), so read the coarse numbers as +-15 %.
 #[test]
 fn zhao1996_prescribed_velocity_force() {
     check_zhao(25.0, 0.55, 3.0);
@@ -402,6 +406,12 @@ fn zhao1996_prescribed_velocity_force() {
 #[ignore = "40 particles over the half-beam, about a minute"]
 fn zhao1996_prescribed_fine() {
     check_zhao(40.0, 0.30, 2.0);
+}
+
+#[test]
+#[ignore = "80 particles over the half-beam: about 15 minutes"]
+fn zhao1996_prescribed_80() {
+    check_zhao(80.0, 0.10, 2.0);
 }
 
 fn check_zhao(n_half: f64, tol: f64, t_tol_ms: f64) {
@@ -427,7 +437,8 @@ fn check_zhao(n_half: f64, tol: f64, t_tol_ms: f64) {
 }
 
 /// Convergence in particle spacing on the Zhao prescribed-velocity case: the error of the filtered peak
-/// force against the BEM peak falls as dp falls (15, 25, 40 particles over the half-beam).
+/// force against the BEM peak falls as dp falls (15, 25, 40 particles over the half-beam: measured 61 %,
+/// 46 %, 28 %; 80 particles, in `zhao1996_prescribed_80`: 1.9 %).
 #[test]
 #[ignore = "three resolutions, several minutes"]
 fn zhao1996_convergence() {
@@ -441,7 +452,10 @@ fn zhao1996_convergence() {
         );
         errs.push(e);
     }
-    assert!(errs[2] < errs[0], "error does not fall: {errs:?}");
+    assert!(
+        errs[2] < errs[1] && errs[1] < errs[0],
+        "error does not fall: {errs:?}"
+    );
 }
 
 fn free_drop(
