@@ -490,8 +490,8 @@ fn free_drop(
 /// A 2D model is expected to decelerate somewhat faster than the rig (its 2D force is larger, see above).
 /// Asserted: the SPH velocity is at or below the measured one from 10 ms on (faster deceleration), and
 /// within 0.8 m/s of it up to 25 ms. At 25 particles over the half-beam the SPH velocity is 0.45 m/s below
-/// the measurement at 10 ms and 0.58 m/s at 15 ms (the coarse force overshoots the 2D BEM, see above);
-/// at 40 particles 0.35 m/s at 10 ms and 0.45 m/s at 15 ms.
+/// the measurement at 10 ms, 0.58 m/s at 15 ms and 0.75 m/s at 25 ms (the coarse force overshoots the 2D
+/// BEM, see above).
 #[test]
 fn zhao1996_free_drop_velocity() {
     let r = free_drop(zhao_wedge(), 241.0, 6.15, 25.0, 0.025, None);
