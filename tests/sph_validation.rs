@@ -523,3 +523,36 @@ fn zhao1996_free_drop_velocity() {
         );
     }
 }
+
+// ------------------------------------------------------------------------------------------------
+// Divergence handling.
+
+/// A run that cannot work (sound speed below the entry speed: the water does not resist, so particles go
+/// through the body) stops with a diagnostic, and the histories up to that point are on disk.
+#[test]
+fn diverging_run_stops_and_keeps_histories() {
+    let beta = 30f64.to_radians();
+    let setup = sph::case::resolve(
+        "diverge",
+        &Section::wedge(beta, 0.25, 0.2).unwrap(),
+        &MotionSpec::Constant { speed_m_s: 5.0 },
+        Vec::new(),
+        &Overrides {
+            dp: Some(0.02),
+            c0: Some(3.0),
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let opts = RunOptions {
+        out_dir: Some(dir.path().to_path_buf()),
+        ..Default::default()
+    };
+    let err = sph::run(setup, &opts).unwrap_err().to_string();
+    assert!(err.contains("went through the body"), "{err}");
+    let csv = std::fs::read_to_string(dir.path().join("history.csv")).unwrap();
+    assert!(csv.lines().count() > 5, "{csv}");
+    let summary = std::fs::read_to_string(dir.path().join("summary.json")).unwrap();
+    assert!(summary.contains("stopped_early"));
+}
