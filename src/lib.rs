@@ -21,13 +21,16 @@
 //! `hull` + `sea` → `seakeeping` → `impact` → water entry (`sph`, `analytic`) → `loads` → `report`.
 //! Each step is one module that owns its types; data flows one way.
 
+pub mod analytic;
 pub mod error;
 pub mod files;
 pub mod hull;
 pub mod input;
+pub mod loads;
 pub mod numerics;
 pub mod provenance;
 pub mod sea;
 pub mod seakeeping;
+pub mod sph;
 
 pub use error::{Error, InputError, Result};

@@ -4,7 +4,9 @@ use std::process::ExitCode;
 
 use clap::{CommandFactory, Parser, Subcommand};
 
+mod bench;
 mod completions;
+mod entry;
 mod hull;
 mod hull_generate;
 mod motions;
@@ -23,6 +25,11 @@ enum Command {
     /// Hull definition: hydrostatics, form coefficients, sections.
     #[command(subcommand)]
     Hull(hull::HullCommand),
+    /// One 2D water-entry run with SPH (wedge, hull section or case file).
+    #[command(subcommand)]
+    Entry(entry::EntryCommand),
+    /// SPH throughput benchmark (particle-steps per second).
+    Bench(bench::BenchArgs),
     /// Sea states: regular waves, spectra, speeds.
     #[command(subcommand)]
     Sea(sea::SeaCommand),
@@ -38,6 +45,8 @@ pub fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Hull(c) => hull::run(c),
+        Command::Entry(c) => entry::run(c),
+        Command::Bench(a) => bench::run(a),
         Command::Sea(c) => sea::run(c),
         Command::Motions(a) => motions::run(a),
         Command::Completions(a) => completions::run(a, &mut Cli::command()),

@@ -1,0 +1,8 @@
+//! Analytic water-entry estimates: a second opinion on every SPH peak and a fast screening mode.
+//!
+//! All for a 2D symmetric section entering calm water, incompressible, no air, no gravity.
+
+pub mod generalised_wagner;
+pub mod von_karman;
+pub mod wagner;
+pub mod zhao_faltinsen1993;

@@ -1,0 +1,313 @@
+//! `slamtool entry ...`: one 2D water-entry run (SPH), with Wagner theory beside it.
+
+use std::path::PathBuf;
+
+use clap::{Args, Subcommand};
+use slamtool::sph::{
+    self, Level, MotionSpec, Overrides, RunOptions, RunResult, SensorSpec, body::Section,
+};
+
+#[derive(Debug, Subcommand)]
+pub enum EntryCommand {
+    /// A wedge entering calm water at constant speed.
+    Wedge(WedgeArgs),
+    /// A case file (TOML) with full control of section, motion, resolution and numerics.
+    Case(CaseArgs),
+    /// A hull section (from a hull file) entering calm water at constant speed, keel first.
+    Section(SectionArgs),
+}
+
+#[derive(Debug, Args)]
+pub struct SectionArgs {
+    /// The hull file.
+    hull: PathBuf,
+    /// Station as a fraction of Lpp aft of the forward perpendicular (0.1 is x = 0.4 Lpp).
+    #[arg(long, conflicts_with = "x")]
+    station: Option<f64>,
+    /// Station as x (m from midship, positive forward).
+    #[arg(long)]
+    x: Option<f64>,
+    /// Constant entry speed (m/s).
+    #[arg(long)]
+    speed: f64,
+    #[command(flatten)]
+    common: Common,
+}
+
+/// Options shared by every entry run.
+#[derive(Debug, Args)]
+pub struct Common {
+    /// Resolution level (particles across the largest half-breadth: coarse 40, medium 80, fine 160).
+    #[arg(long, value_enum)]
+    resolution: Option<Level>,
+    /// Particle spacing (m); overrides --resolution.
+    #[arg(long)]
+    dp: Option<f64>,
+    /// Sound speed (m/s); default from the expected peak pressure.
+    #[arg(long)]
+    c0: Option<f64>,
+    /// End time (s); default when the keel reaches the chine depth.
+    #[arg(long)]
+    t_end: Option<f64>,
+    /// Whole tank instead of a half tank with a symmetry plane.
+    #[arg(long)]
+    full_domain: bool,
+    /// Cut-off (Hz) of the zero-phase low-pass filter for the reported filtered peaks.
+    #[arg(long)]
+    filter_hz: Option<f64>,
+    /// Number of particle snapshots (VTK and PNG) over the run; 0 for none.
+    #[arg(long, default_value_t = 10)]
+    frames: u32,
+    /// Output folder.
+    #[arg(short, long)]
+    out: Option<PathBuf>,
+    /// Print the run summary as JSON on stdout.
+    #[arg(long)]
+    json: bool,
+}
+
+#[derive(Debug, Args)]
+pub struct WedgeArgs {
+    /// Deadrise angle (deg).
+    #[arg(long)]
+    deadrise_deg: f64,
+    /// Constant entry speed (m/s).
+    #[arg(long)]
+    speed: f64,
+    /// Half-beam at the knuckle (m).
+    #[arg(long, default_value_t = 0.25)]
+    half_beam: f64,
+    /// Width of the five pressure sensors along the wedge side (m).
+    #[arg(long, default_value_t = 0.005)]
+    sensor_width: f64,
+    #[command(flatten)]
+    common: Common,
+}
+
+#[derive(Debug, Args)]
+pub struct CaseArgs {
+    /// The case file.
+    file: PathBuf,
+    #[command(flatten)]
+    common: Common,
+}
+
+pub fn run(c: EntryCommand) -> slamtool::Result<()> {
+    match c {
+        EntryCommand::Wedge(a) => wedge(a),
+        EntryCommand::Case(a) => case(a),
+        EntryCommand::Section(a) => hull_section(a),
+    }
+}
+
+fn overrides(c: &Common) -> Overrides {
+    Overrides {
+        level: c.resolution,
+        dp: c.dp,
+        c0: c.c0,
+        t_end: c.t_end,
+        mirror: c.full_domain.then_some(false),
+        filter_cutoff_hz: c.filter_hz,
+        ..Default::default()
+    }
+}
+
+fn wedge(a: WedgeArgs) -> slamtool::Result<()> {
+    for (what, v) in [
+        ("--speed", a.speed),
+        ("--half-beam", a.half_beam),
+        ("--sensor-width", a.sensor_width),
+    ] {
+        if !(v.is_finite() && v > 0.0) {
+            return Err(slamtool::Error::Invalid(format!(
+                "{what} must be a positive number, got {v}"
+            )));
+        }
+    }
+    if !(a.deadrise_deg > 1.0 && a.deadrise_deg < 89.0) {
+        return Err(slamtool::Error::Invalid(format!(
+            "--deadrise-deg must lie between 1 and 89, got {}",
+            a.deadrise_deg
+        )));
+    }
+    let beta = a.deadrise_deg.to_radians();
+    let chine = a.half_beam * beta.tan();
+    let section = Section::wedge(beta, a.half_beam, 1.5 * chine)?;
+    let side = a.half_beam / beta.cos();
+    let sensors = [0.1, 0.3, 0.5, 0.7, 0.9]
+        .iter()
+        .enumerate()
+        .map(|(k, f)| SensorSpec {
+            name: format!("p{}", k + 1),
+            s_m: f * side,
+            width_m: a.sensor_width.min(0.19 * side),
+        })
+        .collect();
+    let name = format!("wedge_{}deg_{}ms", a.deadrise_deg, a.speed);
+    let setup = sph::case::resolve(
+        &name,
+        &section,
+        &MotionSpec::Constant { speed_m_s: a.speed },
+        sensors,
+        &overrides(&a.common),
+    )?;
+    go(setup, &a.common, &name)
+}
+
+fn hull_section(a: SectionArgs) -> slamtool::Result<()> {
+    if !(a.speed.is_finite() && a.speed > 0.0) {
+        return Err(slamtool::Error::Invalid(format!(
+            "--speed must be a positive number, got {}",
+            a.speed
+        )));
+    }
+    let hull = slamtool::hull::Hull::from_file(&a.hull)?;
+    let x = match (a.station, a.x) {
+        (Some(f), None) => hull.station_x(f),
+        (None, Some(x)) => x,
+        _ => {
+            return Err(slamtool::Error::Invalid(
+                "give the station as --station (fraction of Lpp aft of the FP) or --x (m from midship)".into(),
+            ));
+        }
+    };
+    let hs = hull.section_at(x)?;
+    let section = Section::from_half_points(hs.points.clone())?;
+    // Hull sensors on this station: girth from the keel and physical diameter.
+    let sensors: Vec<SensorSpec> = hull
+        .sensors
+        .iter()
+        .filter(|s| (s.x - x).abs() < 1e-6)
+        .map(|s| SensorSpec {
+            name: s.name.clone(),
+            s_m: s.girth,
+            width_m: s.diameter,
+        })
+        .collect();
+    let stem = a
+        .hull
+        .file_stem()
+        .map_or("hull".into(), |s| s.to_string_lossy().into_owned());
+    let name = format!("{stem}_x{x:.3}m_{}ms", a.speed);
+    let setup = sph::case::resolve(
+        &name,
+        &section,
+        &MotionSpec::Constant { speed_m_s: a.speed },
+        sensors,
+        &overrides(&a.common),
+    )?;
+    go(setup, &a.common, &name)
+}
+
+fn case(a: CaseArgs) -> slamtool::Result<()> {
+    let mut setup = sph::case::from_file(&a.file)?;
+    let o = overrides(&a.common);
+    // Command-line options take precedence over the file for the few they share.
+    if o.dp.is_some()
+        || o.c0.is_some()
+        || o.level.is_some()
+        || o.mirror.is_some()
+        || o.t_end.is_some()
+    {
+        return Err(slamtool::Error::Invalid(
+            "with a case file, set resolution, c0, t_end and the domain in the file".into(),
+        ));
+    }
+    if let Some(f) = o.filter_cutoff_hz {
+        setup.filter_cutoff_hz = Some(f);
+    }
+    let name = setup.name.clone();
+    go(setup, &a.common, &name)
+}
+
+fn go(mut setup: sph::Setup, c: &Common, name: &str) -> slamtool::Result<()> {
+    let out = c
+        .out
+        .clone()
+        .unwrap_or_else(|| PathBuf::from("out").join(name));
+    if c.frames > 0 && setup.snapshot_interval.is_none() {
+        setup.snapshot_interval = Some(setup.t_end / c.frames as f64);
+    }
+    let n_fluid_est = setup.tank_half_width * setup.tank_depth / (setup.dp * setup.dp)
+        * if setup.mirror { 1.0 } else { 2.0 };
+    eprintln!(
+        "{name}: dp {:.2} mm, c0 {:.1} m/s, ~{:.0} fluid particles, t_end {:.2} ms, {} thread(s)",
+        setup.dp * 1e3,
+        setup.c0,
+        n_fluid_est,
+        setup.t_end * 1e3,
+        rayon::current_num_threads()
+    );
+    let opts = RunOptions {
+        out_dir: Some(out.clone()),
+        progress: true,
+        vtk: c.frames > 0,
+        png: c.frames > 0,
+    };
+    let RunResult { summary, .. } = sph::run(setup, &opts)?;
+    if c.json {
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&summary).expect("summary serialises")
+        );
+        return Ok(());
+    }
+    let f = &summary.force.summary.raw;
+    println!("case            {}", summary.name);
+    println!(
+        "resolution      dp {:.2} mm, h {:.2} mm, c0 {:.1} m/s, {} fluid particles, {} steps, {:.1} s",
+        summary.dp_m * 1e3,
+        summary.h_m * 1e3,
+        summary.c0_m_s,
+        summary.fluid_particles,
+        summary.steps,
+        summary.wall_time_s
+    );
+    println!(
+        "peak force      {:.1} N/m at {:.3} ms (impulse {:.3} N s/m)",
+        f.value,
+        f.time * 1e3,
+        f.impulse
+    );
+    if let Some(ff) = &summary.force.summary.filtered {
+        let cut = summary
+            .force
+            .summary
+            .filter
+            .as_ref()
+            .map_or(0.0, |x| x.cutoff_hz);
+        println!(
+            "  filtered      {:.1} N/m at {:.3} ms ({cut} Hz zero-phase low-pass)",
+            ff.value,
+            ff.time * 1e3
+        );
+    }
+    println!(
+        "peak pressure   {:.1} kPa at {:.3} ms, {:.1} mm from the keel along the contour",
+        summary.peak_contour_pressure_pa * 1e-3,
+        summary.peak_contour_pressure_time_s * 1e3,
+        summary.peak_contour_pressure_s_m * 1e3
+    );
+    for s in &summary.sensors {
+        println!(
+            "  sensor {:8} {:.1} kPa at {:.3} ms",
+            s.name,
+            s.summary.raw.value * 1e-3,
+            s.summary.raw.time * 1e3
+        );
+    }
+    if let (Some(wf), Some(wt), Some(wp)) = (
+        summary.wagner_peak_force_n_per_m,
+        summary.wagner_peak_force_time_s,
+        summary.wagner_peak_pressure_pa,
+    ) {
+        println!(
+            "Wagner (flat-plate, same v(t), up to full wetting): force {:.1} N/m at {:.3} ms, peak pressure {:.1} kPa",
+            wf,
+            wt * 1e3,
+            wp * 1e-3
+        );
+    }
+    println!("outputs in      {}", out.display());
+    Ok(())
+}

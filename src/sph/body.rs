@@ -1,0 +1,456 @@
+//! The rigid body: a 2D section polyline, its dummy-particle band, its contour samples, and its motion.
+//!
+//! The section is given as its starboard half, (y, z) points from the keel (y = 0) up to the deck edge, in
+//! a body frame with the keel at z = 0 (so the keel touches the calm water surface at t = 0). The full
+//! section is that half and its mirror image; the body is closed by a straight line across the top.
+
+use crate::error::{Error, Result};
+use crate::numerics::Pchip;
+
+/// A symmetric section shape.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Section {
+    /// Starboard half, keel first: (y >= 0, z), body frame, keel at (0, 0).
+    points: Vec<[f64; 2]>,
+    /// Full open contour, port deck edge through the keel to the starboard deck edge.
+    full: Vec<[f64; 2]>,
+}
+
+impl Section {
+    /// A wedge of deadrise `beta` (rad) with knuckles at half-breadth `half_beam` and vertical sides up to
+    /// `height` above the keel (the shape of the Zhao et al. 1996 drop-test wedge).
+    pub fn wedge(beta: f64, half_beam: f64, height: f64) -> Result<Self> {
+        if !(beta > 0.0 && beta < std::f64::consts::FRAC_PI_2) {
+            return Err(Error::Invalid(format!(
+                "wedge deadrise must lie between 0 and 90 deg, got {} deg",
+                beta.to_degrees()
+            )));
+        }
+        let zk = half_beam * beta.tan();
+        let mut pts = vec![[0.0, 0.0], [half_beam, zk]];
+        if height > zk * (1.0 + 1e-9) {
+            pts.push([half_beam, height]);
+        }
+        Self::from_half_points(pts)
+    }
+
+    /// A section from its starboard half, keel first. The points are shifted so that the lowest point is at
+    /// z = 0. The first point must lie on the centre line (y = 0).
+    pub fn from_half_points(mut points: Vec<[f64; 2]>) -> Result<Self> {
+        if points.len() < 2 {
+            return Err(Error::Invalid(
+                "a section needs at least two points (keel and one more)".into(),
+            ));
+        }
+        for (i, p) in points.iter().enumerate() {
+            if !p[0].is_finite() || !p[1].is_finite() {
+                return Err(Error::Invalid(format!(
+                    "section point {i} is not finite: {p:?}"
+                )));
+            }
+            if p[0] < 0.0 {
+                return Err(Error::Invalid(format!(
+                    "section point {i} has negative half-breadth {} m",
+                    p[0]
+                )));
+            }
+        }
+        if points[0][0] != 0.0 {
+            points.insert(0, [0.0, points[0][1]]);
+        }
+        points.dedup_by(|a, b| (a[0] - b[0]).hypot(a[1] - b[1]) < 1e-12);
+        let zmin = points.iter().map(|p| p[1]).fold(f64::INFINITY, f64::min);
+        for p in &mut points {
+            p[1] -= zmin;
+        }
+        if points.len() < 2 || points.iter().all(|p| p[0] == 0.0) {
+            return Err(Error::Invalid("the section has no breadth".into()));
+        }
+        let mut full: Vec<[f64; 2]> = points.iter().rev().map(|p| [-p[0], p[1]]).collect();
+        full.extend_from_slice(&points[1..]); // points[0] is on the centre line
+        Ok(Self { points, full })
+    }
+
+    /// Starboard half, keel first.
+    pub fn half_points(&self) -> &[[f64; 2]] {
+        &self.points
+    }
+
+    /// Full open contour from the port deck edge through the keel to the starboard deck edge.
+    pub fn full_contour(&self) -> &[[f64; 2]] {
+        &self.full
+    }
+
+    /// The full contour closed by the straight line across the top (port deck edge back to the start).
+    /// Dummy particles line the whole of it, so a jet that rises past the deck edge cannot fall into the
+    /// body.
+    pub fn closed_contour(&self) -> Vec<[f64; 2]> {
+        let mut c = self.full.clone();
+        c.push(c[0]);
+        c
+    }
+
+    /// Height of the section above the keel (m).
+    pub fn height(&self) -> f64 {
+        self.points.iter().map(|p| p[1]).fold(0.0, f64::max)
+    }
+
+    /// Largest half-breadth (m).
+    pub fn half_breadth(&self) -> f64 {
+        self.points.iter().map(|p| p[0]).fold(0.0, f64::max)
+    }
+
+    /// Smallest local deadrise angle (rad) of the contour segments below `z_max`: the angle of each
+    /// segment with the horizontal, in [0, pi/2]. Drives the expected peak pressure.
+    pub fn min_deadrise_below(&self, z_max: f64) -> f64 {
+        let mut beta = std::f64::consts::FRAC_PI_2;
+        for w in self.points.windows(2) {
+            if w[0][1].min(w[1][1]) > z_max {
+                continue;
+            }
+            let dy = (w[1][0] - w[0][0]).abs();
+            let dz = (w[1][1] - w[0][1]).abs();
+            if dy > 0.0 {
+                beta = beta.min(dz.atan2(dy));
+            }
+        }
+        beta
+    }
+
+    /// Whether a body-frame point lies inside the closed section (even-odd rule).
+    pub fn contains(&self, y: f64, z: f64) -> bool {
+        let c = &self.full;
+        let n = c.len();
+        let mut inside = false;
+        for i in 0..n {
+            let a = c[i];
+            let b = c[(i + 1) % n];
+            if (a[1] > z) != (b[1] > z) {
+                let yc = a[0] + (z - a[1]) / (b[1] - a[1]) * (b[0] - a[0]);
+                if y < yc {
+                    inside = !inside;
+                }
+            }
+        }
+        inside
+    }
+}
+
+/// Distance from a point to an open polyline.
+pub fn distance_to_polyline(c: &[[f64; 2]], y: f64, z: f64) -> f64 {
+    let mut d2 = f64::INFINITY;
+    for w in c.windows(2) {
+        let (ay, az, by, bz) = (w[0][0], w[0][1], w[1][0], w[1][1]);
+        let (ty, tz) = (by - ay, bz - az);
+        let l2 = ty * ty + tz * tz;
+        let s = if l2 > 0.0 {
+            (((y - ay) * ty + (z - az) * tz) / l2).clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        let (py, pz) = (ay + s * ty - y, az + s * tz - z);
+        d2 = d2.min(py * py + pz * pz);
+    }
+    d2.sqrt()
+}
+
+/// Body-frame positions of the dummy particles: `layers` layers at depths (k + 1/2) dp under the closed
+/// contour,
+/// spaced dp along it, with corners filled from a dp lattice. Only points with y >= y_min are returned
+/// (y_min = dp/4 with a symmetry plane, so no particle sits on top of its own mirror image).
+pub fn dummy_points(section: &Section, dp: f64, layers: usize, y_min: f64) -> Vec<[f64; 2]> {
+    let c = section.closed_contour();
+    let depth = layers as f64 * dp;
+    let mut pts: Vec<[f64; 2]> = Vec::new();
+    let mut hash = SpatialHash::new(dp);
+    let try_add = |p: [f64; 2], min_gap: f64, pts: &mut Vec<[f64; 2]>, hash: &mut SpatialHash| {
+        if p[0] < y_min || !section.contains(p[0], p[1]) {
+            return;
+        }
+        if hash.any_within(pts, p, min_gap) {
+            return;
+        }
+        hash.insert(pts.len(), p);
+        pts.push(p);
+    };
+    for k in 0..layers {
+        let d = (k as f64 + 0.5) * dp;
+        for w in c.windows(2) {
+            let (ty, tz) = (w[1][0] - w[0][0], w[1][1] - w[0][1]);
+            let l = ty.hypot(tz);
+            if l == 0.0 {
+                continue;
+            }
+            let (ny, nz) = (-tz / l, ty / l); // inward normal (body to the left of the direction of travel)
+            let m = ((l / dp).round() as usize).max(1);
+            for i in 0..m {
+                let s = (i as f64 + 0.5) / m as f64;
+                let p = [w[0][0] + s * ty + d * ny, w[0][1] + s * tz + d * nz];
+                if (distance_to_polyline(&c, p[0], p[1]) - d).abs() < 0.3 * dp {
+                    try_add(p, 0.6 * dp, &mut pts, &mut hash);
+                }
+            }
+        }
+    }
+    // Fill the corners (body-concave parts) from a lattice.
+    let (mut y0, mut y1, mut z0, mut z1) = (f64::INFINITY, f64::NEG_INFINITY, 0.0, 0.0);
+    for p in &c {
+        y0 = f64::min(y0, p[0]);
+        y1 = f64::max(y1, p[0]);
+        z0 = f64::min(z0, p[1]);
+        z1 = f64::max(z1, p[1]);
+    }
+    let ny = ((y1 - y0) / dp).ceil() as i64 + 1;
+    let nz = ((z1 - z0) / dp).ceil() as i64 + 1;
+    for jz in 0..nz {
+        for jy in 0..ny {
+            let p = [y0 + (jy as f64 + 0.5) * dp, z0 + (jz as f64 + 0.5) * dp];
+            let d = distance_to_polyline(&c, p[0], p[1]);
+            if d <= depth {
+                try_add(p, 0.75 * dp, &mut pts, &mut hash);
+            }
+        }
+    }
+    pts
+}
+
+/// A point on the body contour used for sensors and the section force.
+#[derive(Debug, Clone, Copy)]
+pub struct ContourPoint {
+    /// Body-frame position.
+    pub y: f64,
+    pub z: f64,
+    /// Outward unit normal (from the body into the water).
+    pub ny: f64,
+    pub nz: f64,
+    /// Length of contour this point stands for (m).
+    pub ds: f64,
+    /// Arc length from the keel along the starboard half, at the point (m); negative on the port half.
+    pub s: f64,
+}
+
+/// Contour samples at spacing at most `spacing`, starboard half (and the port half when `both_sides`).
+pub fn contour_points(section: &Section, spacing: f64, both_sides: bool) -> Vec<ContourPoint> {
+    let half = section.half_points();
+    let mut out = Vec::new();
+    let mut s0 = 0.0;
+    for w in half.windows(2) {
+        let (ty, tz) = (w[1][0] - w[0][0], w[1][1] - w[0][1]);
+        let l = ty.hypot(tz);
+        if l == 0.0 {
+            continue;
+        }
+        let m = ((l / spacing).ceil() as usize).max(1);
+        let ds = l / m as f64;
+        // Starboard half runs keel -> deck; the water is to the right of that direction.
+        let (ny, nz) = (tz / l, -ty / l);
+        for i in 0..m {
+            let f = (i as f64 + 0.5) / m as f64;
+            let p = ContourPoint {
+                y: w[0][0] + f * ty,
+                z: w[0][1] + f * tz,
+                ny,
+                nz,
+                ds,
+                s: s0 + f * l,
+            };
+            out.push(p);
+            if both_sides {
+                out.push(ContourPoint {
+                    y: -p.y,
+                    ny: -p.ny,
+                    s: -p.s,
+                    ..p
+                });
+            }
+        }
+        s0 += l;
+    }
+    out
+}
+
+/// Arc length of the starboard half contour (m).
+pub fn half_contour_length(section: &Section) -> f64 {
+    section
+        .half_points()
+        .windows(2)
+        .map(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]))
+        .sum()
+}
+
+/// The body-frame point at arc length `s` from the keel along the starboard half.
+pub fn point_at_arc(section: &Section, s: f64) -> Option<[f64; 2]> {
+    let mut acc = 0.0;
+    for w in section.half_points().windows(2) {
+        let l = (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]);
+        if s <= acc + l && l > 0.0 {
+            let f = ((s - acc) / l).clamp(0.0, 1.0);
+            return Some([
+                w[0][0] + f * (w[1][0] - w[0][0]),
+                w[0][1] + f * (w[1][1] - w[0][1]),
+            ]);
+        }
+        acc += l;
+    }
+    None
+}
+
+struct SpatialHash {
+    inv: f64,
+    map: std::collections::HashMap<(i64, i64), Vec<usize>>,
+}
+
+impl SpatialHash {
+    fn new(cell: f64) -> Self {
+        Self {
+            inv: 1.0 / cell,
+            map: Default::default(),
+        }
+    }
+    fn key(&self, p: [f64; 2]) -> (i64, i64) {
+        (
+            (p[0] * self.inv).floor() as i64,
+            (p[1] * self.inv).floor() as i64,
+        )
+    }
+    fn insert(&mut self, i: usize, p: [f64; 2]) {
+        self.map.entry(self.key(p)).or_default().push(i);
+    }
+    fn any_within(&self, pts: &[[f64; 2]], p: [f64; 2], r: f64) -> bool {
+        let (ky, kz) = self.key(p);
+        for dy in -1..=1 {
+            for dz in -1..=1 {
+                if let Some(v) = self.map.get(&(ky + dy, kz + dz)) {
+                    for &i in v {
+                        if (pts[i][0] - p[0]).hypot(pts[i][1] - p[1]) < r {
+                            return true;
+                        }
+                    }
+                }
+            }
+        }
+        false
+    }
+}
+
+/// How the body moves vertically. Speeds are downward-positive (entry speed).
+#[derive(Debug, Clone)]
+pub enum Motion {
+    /// Constant downward speed (m/s).
+    Constant { speed: f64 },
+    /// Downward speed as a function of time, from a table (shape-preserving cubic in between; the last
+    /// value is held after the table ends).
+    Prescribed {
+        table: Pchip,
+        t_end: f64,
+        v_end: f64,
+    },
+    /// Free fall in heave under gravity and the water force, mass per metre of section (kg/m), starting
+    /// at downward speed `speed0`.
+    FreeHeave { mass_per_m: f64, speed0: f64 },
+}
+
+impl Motion {
+    /// A prescribed-velocity motion from a table of (t, v_down).
+    pub fn prescribed(t: &[f64], v: &[f64]) -> Result<Self> {
+        if t.len() < 2 || t.len() != v.len() {
+            return Err(Error::Invalid(
+                "a velocity table needs at least two (t, v) rows".into(),
+            ));
+        }
+        if t.windows(2).any(|w| w[1] <= w[0]) {
+            return Err(Error::Invalid(
+                "velocity table times must increase strictly".into(),
+            ));
+        }
+        Ok(Motion::Prescribed {
+            table: Pchip::new(t, v),
+            t_end: *t.last().unwrap(),
+            v_end: *v.last().unwrap(),
+        })
+    }
+
+    /// Downward speed at time t for kinematic motions; `None` for free heave.
+    pub fn speed_at(&self, t: f64) -> Option<f64> {
+        match self {
+            Motion::Constant { speed } => Some(*speed),
+            Motion::Prescribed {
+                table,
+                t_end,
+                v_end,
+            } => Some(if t >= *t_end {
+                *v_end
+            } else {
+                table.eval(t.max(0.0))
+            }),
+            Motion::FreeHeave { .. } => None,
+        }
+    }
+
+    /// Downward acceleration at time t for kinematic motions.
+    pub fn accel_at(&self, t: f64) -> Option<f64> {
+        match self {
+            Motion::Constant { .. } => Some(0.0),
+            Motion::Prescribed { table, t_end, .. } => Some(if t >= *t_end {
+                0.0
+            } else {
+                table.derivative(t.max(0.0))
+            }),
+            Motion::FreeHeave { .. } => None,
+        }
+    }
+
+    /// The entry speed at t = 0.
+    pub fn initial_speed(&self) -> f64 {
+        match self {
+            Motion::FreeHeave { speed0, .. } => *speed0,
+            m => m.speed_at(0.0).unwrap_or(0.0),
+        }
+    }
+
+    /// The largest downward speed over [0, t_end] (the initial speed for free fall).
+    pub fn max_speed(&self, t_end: f64) -> f64 {
+        match self {
+            Motion::FreeHeave { speed0, .. } => *speed0,
+            m => (0..=200)
+                .map(|k| m.speed_at(t_end * k as f64 / 200.0).unwrap_or(0.0).abs())
+                .fold(0.0, f64::max),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn wedge_contains_and_dummies() {
+        let s = Section::wedge(30f64.to_radians(), 0.25, 0.29).unwrap();
+        assert!(s.contains(0.0, 0.1));
+        assert!(!s.contains(0.2, 0.05));
+        assert!(s.contains(0.2, 0.2));
+        let dp = 0.005;
+        let pts = dummy_points(&s, dp, 3, dp / 4.0);
+        for p in &pts {
+            assert!(s.contains(p[0], p[1]));
+            let d = distance_to_polyline(&s.closed_contour(), p[0], p[1]);
+            assert!(d <= 3.0 * dp + 1e-12);
+        }
+        // Roughly three layers along the half contour and half the top (0.289 + 0.146 + 0.25 m long).
+        let expected = 3.0 * (0.2887 + 0.146 + 0.25) / dp;
+        let n = pts.len() as f64;
+        assert!(
+            n > 0.8 * expected && n < 1.2 * expected,
+            "{n} vs {expected}"
+        );
+    }
+
+    #[test]
+    fn contour_normals_point_into_the_water() {
+        let s = Section::wedge(30f64.to_radians(), 0.25, 0.29).unwrap();
+        for c in contour_points(&s, 0.01, true) {
+            let (y, z) = (c.y + 1e-3 * c.ny, c.z + 1e-3 * c.nz);
+            assert!(!s.contains(y, z), "{c:?}");
+        }
+    }
+}

@@ -1,0 +1,111 @@
+//! Dummy-particle walls with extrapolated pressure (Adami, Hu & Adams 2012, J. Comput. Phys. 231,
+//! 7057-7075, eq. 27):
+//!
+//! p_w = [ sum_f p_f W_wf + (g - a_w) . sum_f rho_f r_wf W_wf ] / sum_f W_wf,   r_wf = r_w - r_f
+//!
+//! summed over the fluid particles f near the wall particle w, with g the gravity vector and a_w the
+//! acceleration of the wall. The dummy density follows from the equation of state, rho_w = rho(p_w). The
+//! same formula gives the wall pressure at any point of the body contour (sensors, section force).
+
+use rayon::prelude::*;
+
+use crate::sph::eos::Eos;
+use crate::sph::kernel::WendlandC2;
+use crate::sph::neighbours::{Grid, for_each_neighbour};
+use crate::sph::particles::{Kind, Particles};
+
+/// Wall pressure at point (y, z) of a wall moving with acceleration (ay, az), and the Shepard sum
+/// sum_f V_f W_wf of the fluid around it (0 when no fluid is near; about 1/2 for a fully wetted flat wall).
+/// `g` is the (downward-positive) gravitational acceleration.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+pub fn wall_pressure(
+    grid: &Grid,
+    pt: &Particles,
+    kernel: &WendlandC2,
+    eos: &Eos,
+    g: f64,
+    y: f64,
+    z: f64,
+    accel: [f64; 2],
+) -> (f64, f64) {
+    let (mut sw, mut spw, mut sry, mut srz, mut shepard) = (0.0, 0.0, 0.0, 0.0, 0.0);
+    for_each_neighbour(
+        grid,
+        &pt.y,
+        &pt.z,
+        y,
+        z,
+        usize::MAX,
+        kernel.support2(),
+        |j, dy, dz, r2, _| {
+            if pt.kind[j] != Kind::Fluid {
+                return;
+            }
+            let w = kernel.w(r2.sqrt());
+            let rho = pt.rho[j];
+            sw += w;
+            spw += eos.pressure(rho) * w;
+            sry += rho * dy * w;
+            srz += rho * dz * w;
+            shepard += pt.mass[j] / rho * w;
+        },
+    );
+    if sw <= 0.0 {
+        return (0.0, 0.0);
+    }
+    let (gy, gz) = (-accel[0], -g - accel[1]);
+    ((spw + gy * sry + gz * srz) / sw, shepard)
+}
+
+/// Set the pressure of every particle: equation of state for fluid, extrapolation for dummies (wall
+/// acceleration zero for tank walls, `body_accel` for body particles). Then set the dummy densities from
+/// their pressures, and the volumes used in the sums: m / rho for fluid, the fixed lattice volume
+/// `dummy_vol` (dp^2) for dummies, whose layout does not compress. Reads the fluid densities only, so the result does not depend on the visiting order.
+#[allow(clippy::too_many_arguments)]
+pub fn update_pressures(
+    grid: &Grid,
+    pt: &mut Particles,
+    kernel: &WendlandC2,
+    eos: &Eos,
+    dummy_vol: f64,
+    g: f64,
+    body_accel: [f64; 2],
+) {
+    let mut p = std::mem::take(&mut pt.p);
+    {
+        let ptr: &Particles = pt;
+        p.par_iter_mut()
+            .with_min_len(1024)
+            .enumerate()
+            .for_each(|(i, pi)| {
+                *pi = match ptr.kind[i] {
+                    Kind::Fluid => eos.pressure(ptr.rho[i]),
+                    Kind::Wall => {
+                        wall_pressure(grid, ptr, kernel, eos, g, ptr.y[i], ptr.z[i], [0.0; 2]).0
+                    }
+                    Kind::Body => {
+                        wall_pressure(grid, ptr, kernel, eos, g, ptr.y[i], ptr.z[i], body_accel).0
+                    }
+                };
+            });
+    }
+    pt.p = p;
+    (
+        pt.rho.par_iter_mut(),
+        pt.vol.par_iter_mut(),
+        pt.kind.par_iter(),
+        pt.p.par_iter(),
+        pt.mass.par_iter(),
+    )
+        .into_par_iter()
+        .with_min_len(4096)
+        .for_each(|(rho, vol, kind, p, m)| {
+            if *kind == Kind::Fluid {
+                *vol = m / *rho;
+            } else {
+                *rho = eos.density(*p);
+                *vol = dummy_vol;
+            }
+        });
+}

@@ -1,0 +1,3 @@
+//! Wall and body boundary conditions. One file per published method.
+
+pub mod adami2012;

@@ -1,0 +1,625 @@
+//! Water-entry cases: the TOML case file, and the automatic choice of particle spacing, sound speed,
+//! tank size and end time from the section, the speed and a resolution level. Every automatic choice can be
+//! overridden, and the resolved [`Setup`] (with a note on how each value was chosen) is written with the
+//! results.
+//!
+//! Automatic choices:
+//! * particle spacing dp = b / N, b the largest half-breadth of the section, N = 40 / 80 / 160 for the
+//!   coarse / medium / fine levels (or `particles_per_half_beam`);
+//! * sound speed c0 = max(V sqrt(Cp / 0.02), 10 sqrt(g D)): density variation below about 1 % at the
+//!   expected peak pressure coefficient Cp = (pi^2/4) cot^2(beta) (Wagner 1932, beta the smallest local
+//!   deadrise below the chine, not below 10 deg) and at the tank bottom (depth D);
+//! * tank half-width 4 b and depth 3 b, side walls 0.25 D above the water;
+//! * end time: the keel reaches the depth of the chine (the point of largest half-breadth) below the calm
+//!   water surface, capped at 0.9 of the section height.
+
+use std::path::Path;
+
+use serde::{Deserialize, Serialize};
+use toml::Spanned;
+
+use crate::error::{Error, Result};
+use crate::input::{SourceText, positive};
+use crate::sph::body::{Motion, Section};
+use crate::sph::eos::EosKind;
+use crate::sph::sensors::SensorSpec;
+
+/// How the body moves, as written in a case (speeds downward-positive).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+pub enum MotionSpec {
+    /// Constant entry speed.
+    Constant { speed_m_s: f64 },
+    /// Downward speed from a table of [t_s, v_m_s] rows.
+    Prescribed { table: Vec<[f64; 2]> },
+    /// Free fall in heave with the given mass per metre of section, from the given entry speed.
+    FreeHeave { mass_per_m_kg: f64, speed_m_s: f64 },
+}
+
+impl MotionSpec {
+    pub fn build(&self) -> Result<Motion> {
+        match self {
+            MotionSpec::Constant { speed_m_s } => Ok(Motion::Constant { speed: *speed_m_s }),
+            MotionSpec::Prescribed { table } => {
+                let t: Vec<f64> = table.iter().map(|r| r[0]).collect();
+                let v: Vec<f64> = table.iter().map(|r| r[1]).collect();
+                Motion::prescribed(&t, &v)
+            }
+            MotionSpec::FreeHeave {
+                mass_per_m_kg,
+                speed_m_s,
+            } => Ok(Motion::FreeHeave {
+                mass_per_m: *mass_per_m_kg,
+                speed0: *speed_m_s,
+            }),
+        }
+    }
+}
+
+/// Resolution level.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
+#[serde(rename_all = "lowercase")]
+pub enum Level {
+    Coarse,
+    Medium,
+    Fine,
+}
+
+impl Level {
+    /// Particles across the largest half-breadth.
+    pub fn particles_per_half_beam(self) -> f64 {
+        match self {
+            Level::Coarse => 40.0,
+            Level::Medium => 80.0,
+            Level::Fine => 160.0,
+        }
+    }
+}
+
+/// Everything a run needs, fully resolved. Written to the output folder as `setup.json`.
+#[derive(Debug, Clone, Serialize)]
+pub struct Setup {
+    pub name: String,
+    /// Starboard half of the section, keel first (body frame); `None` for a tank without a body.
+    pub section_points: Option<Vec<[f64; 2]>>,
+    pub motion: Option<MotionSpec>,
+    pub rho0: f64,
+    pub g: f64,
+    pub dp: f64,
+    pub h_over_dp: f64,
+    pub c0: f64,
+    pub eos: EosKind,
+    /// delta-SPH coefficient (Antuono et al. 2010).
+    pub delta: f64,
+    /// Artificial viscosity coefficient.
+    pub alpha: f64,
+    /// Courant number.
+    pub cfl: f64,
+    pub tank_half_width: f64,
+    pub tank_depth: f64,
+    pub tank_wall_height: f64,
+    /// Half domain with a symmetry plane at y = 0.
+    pub mirror: bool,
+    pub t_end: f64,
+    pub sensors: Vec<SensorSpec>,
+    /// Time between particle snapshots (VTK/PNG); `None` for none.
+    pub snapshot_interval: Option<f64>,
+    /// Cut-off of the zero-phase low-pass filter applied to the reported peaks (Hz); `None` for raw only.
+    pub filter_cutoff_hz: Option<f64>,
+    /// How each automatic choice was made.
+    pub notes: Vec<String>,
+}
+
+impl Setup {
+    /// Rough number of time steps (for reserving history storage).
+    pub fn expected_steps(&self) -> usize {
+        let dt = self.cfl * self.h_over_dp * self.dp / (self.c0 * 1.1);
+        ((self.t_end / dt) * 1.3) as usize + 16
+    }
+}
+
+/// Overrides of the automatic choices (all optional).
+#[derive(Debug, Clone, Default)]
+pub struct Overrides {
+    pub level: Option<Level>,
+    pub particles_per_half_beam: Option<f64>,
+    pub dp: Option<f64>,
+    pub c0: Option<f64>,
+    pub h_over_dp: Option<f64>,
+    pub eos: Option<EosKind>,
+    pub delta: Option<f64>,
+    pub alpha: Option<f64>,
+    pub cfl: Option<f64>,
+    pub tank_half_width: Option<f64>,
+    pub tank_depth: Option<f64>,
+    pub tank_wall_height: Option<f64>,
+    pub mirror: Option<bool>,
+    pub t_end: Option<f64>,
+    pub snapshot_interval: Option<f64>,
+    pub filter_cutoff_hz: Option<f64>,
+}
+
+/// Wagner's peak pressure coefficient (pi^2/4) cot^2(beta), used only to choose the sound speed.
+fn wagner_cp(beta: f64) -> f64 {
+    crate::analytic::wagner::peak_pressure_coefficient(beta)
+}
+
+/// Resolve a case: fill every automatic choice not overridden, and record how.
+pub fn resolve(
+    name: &str,
+    section: &Section,
+    motion: &MotionSpec,
+    sensors: Vec<SensorSpec>,
+    o: &Overrides,
+) -> Result<Setup> {
+    let built = motion.build()?;
+    let mut notes = Vec::new();
+    let b = section.half_breadth();
+    // Depth of the chine: z of the first point of largest half-breadth.
+    let z_chine = section
+        .half_points()
+        .iter()
+        .find(|p| p[0] >= b * (1.0 - 1e-9))
+        .map_or(section.height(), |p| p[1]);
+    let depth_end = z_chine.min(0.9 * section.height()).max(1e-6);
+    let n_half = o
+        .particles_per_half_beam
+        .unwrap_or(o.level.unwrap_or(Level::Coarse).particles_per_half_beam());
+    let dp = match o.dp {
+        Some(d) => {
+            notes.push(format!("dp = {d} m (given)"));
+            d
+        }
+        None => {
+            let d = b / n_half;
+            notes.push(format!(
+                "dp = b/N = {b:.4}/{n_half} = {d:.5} m (b largest half-breadth)"
+            ));
+            d
+        }
+    };
+    let t_end = match o.t_end {
+        Some(t) => {
+            notes.push(format!("t_end = {t} s (given)"));
+            t
+        }
+        None => {
+            let t = time_to_depth(&built, depth_end);
+            notes.push(format!(
+                "t_end = {t:.5} s: keel {depth_end:.4} m below the calm water (chine depth, at most 0.9 x height)"
+            ));
+            t
+        }
+    };
+    let tank_half_width = o.tank_half_width.unwrap_or(4.0 * b);
+    let tank_depth = o.tank_depth.unwrap_or(3.0 * b);
+    let tank_wall_height = o.tank_wall_height.unwrap_or(0.25 * tank_depth);
+    if o.tank_half_width.is_none() || o.tank_depth.is_none() {
+        notes.push(format!(
+            "tank half-width {tank_half_width:.3} m and depth {tank_depth:.3} m (4 b and 3 b unless given)"
+        ));
+    }
+    let g = 9.81;
+    let c0 = match o.c0 {
+        Some(c) => {
+            notes.push(format!("c0 = {c} m/s (given)"));
+            c
+        }
+        None => {
+            let v = built.max_speed(t_end);
+            let beta = section.min_deadrise_below(z_chine).max(10f64.to_radians());
+            let cp = wagner_cp(beta);
+            let c_imp = v * (cp / 0.02).sqrt();
+            let c_hyd = 10.0 * (g * tank_depth).sqrt();
+            let c = c_imp.max(c_hyd);
+            notes.push(format!(
+                "c0 = max(V sqrt(Cp/0.02), 10 sqrt(g D)) = max({v:.3} x sqrt({cp:.3}/0.02), {c_hyd:.2}) = {c:.2} m/s \
+                 (Cp Wagner at deadrise {:.1} deg)",
+                beta.to_degrees()
+            ));
+            c
+        }
+    };
+    let setup = Setup {
+        name: name.to_string(),
+        section_points: Some(section.half_points().to_vec()),
+        motion: Some(motion.clone()),
+        rho0: 1000.0,
+        g,
+        dp,
+        h_over_dp: o.h_over_dp.unwrap_or(1.5),
+        c0,
+        eos: o.eos.unwrap_or(EosKind::Linear),
+        delta: o.delta.unwrap_or(0.1),
+        alpha: o.alpha.unwrap_or(0.02),
+        cfl: o.cfl.unwrap_or(0.2),
+        tank_half_width,
+        tank_depth,
+        tank_wall_height,
+        mirror: o.mirror.unwrap_or(true),
+        t_end,
+        sensors,
+        snapshot_interval: o.snapshot_interval,
+        filter_cutoff_hz: o.filter_cutoff_hz,
+        notes,
+    };
+    check(&setup)?;
+    Ok(setup)
+}
+
+/// Sanity checks on a resolved setup (catches overrides that cannot work).
+pub fn check(s: &Setup) -> Result<()> {
+    let bad =
+        |what: &str, v: f64| Error::Invalid(format!("{what} must be a positive number, got {v}"));
+    for (what, v) in [
+        ("dp", s.dp),
+        ("c0", s.c0),
+        ("h_over_dp", s.h_over_dp),
+        ("cfl", s.cfl),
+        ("tank half-width", s.tank_half_width),
+        ("tank depth", s.tank_depth),
+        ("t_end", s.t_end),
+    ] {
+        if !(v.is_finite() && v > 0.0) {
+            return Err(bad(what, v));
+        }
+    }
+    if s.h_over_dp < 1.0 || s.h_over_dp > 3.0 {
+        return Err(Error::Invalid(format!(
+            "h/dp must lie in [1, 3], got {}",
+            s.h_over_dp
+        )));
+    }
+    if s.cfl > 0.5 {
+        return Err(Error::Invalid(format!(
+            "Courant number must be at most 0.5, got {}",
+            s.cfl
+        )));
+    }
+    let n = (s.tank_half_width / s.dp) * (s.tank_depth / s.dp) * if s.mirror { 1.0 } else { 2.0 };
+    if n > 2.0e7 {
+        return Err(Error::Invalid(format!(
+            "{n:.3e} fluid particles: choose a larger dp or a smaller tank"
+        )));
+    }
+    if n < 100.0 {
+        return Err(Error::Invalid(format!(
+            "only {n:.0} fluid particles: dp {} m is too large for the tank",
+            s.dp
+        )));
+    }
+    if let Some(MotionSpec::FreeHeave { mass_per_m_kg, .. }) = &s.motion
+        && !(mass_per_m_kg.is_finite() && *mass_per_m_kg > 0.0)
+    {
+        return Err(bad("mass per metre", *mass_per_m_kg));
+    }
+    Ok(())
+}
+
+/// Time for the keel to reach `depth` below the surface.
+fn time_to_depth(m: &Motion, depth: f64) -> f64 {
+    match m {
+        Motion::Constant { speed } => depth / speed.max(1e-9),
+        Motion::FreeHeave { speed0, .. } => 1.3 * depth / speed0.max(1e-9),
+        _ => {
+            let (mut t, mut z) = (0.0, 0.0);
+            let dt = 1e-5;
+            while z < depth && t < 10.0 {
+                z += dt * m.speed_at(t + 0.5 * dt).unwrap_or(0.0);
+                t += dt;
+            }
+            t
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Case file
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct CaseFile {
+    name: Option<String>,
+    section: SectionFile,
+    motion: MotionFile,
+    #[serde(default)]
+    resolution: ResolutionFile,
+    #[serde(default)]
+    numerics: NumericsFile,
+    #[serde(default)]
+    tank: TankFile,
+    #[serde(default)]
+    run: RunFile,
+    #[serde(default)]
+    sensor: Vec<SensorFile>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SectionFile {
+    wedge: Option<Spanned<WedgeFile>>,
+    /// Starboard half (y, z) from the keel up.
+    points: Option<Spanned<Vec<[f64; 2]>>>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct WedgeFile {
+    deadrise_deg: Spanned<f64>,
+    half_beam_m: Spanned<f64>,
+    height_m: Option<Spanned<f64>>,
+}
+
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(rename_all = "snake_case")]
+enum MotionKind {
+    Constant,
+    Prescribed,
+    FreeHeave,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct MotionFile {
+    kind: Spanned<MotionKind>,
+    speed_m_s: Option<Spanned<f64>>,
+    table: Option<Spanned<Vec<[f64; 2]>>>,
+    mass_per_m_kg: Option<Spanned<f64>>,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ResolutionFile {
+    level: Option<Level>,
+    particles_per_half_beam: Option<Spanned<f64>>,
+    dp_m: Option<Spanned<f64>>,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct NumericsFile {
+    c0_m_s: Option<Spanned<f64>>,
+    h_over_dp: Option<Spanned<f64>>,
+    eos: Option<EosKind>,
+    delta: Option<Spanned<f64>>,
+    alpha: Option<Spanned<f64>>,
+    cfl: Option<Spanned<f64>>,
+    mirror: Option<bool>,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct TankFile {
+    half_width_m: Option<Spanned<f64>>,
+    depth_m: Option<Spanned<f64>>,
+    wall_height_m: Option<Spanned<f64>>,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RunFile {
+    t_end_s: Option<Spanned<f64>>,
+    snapshot_interval_s: Option<Spanned<f64>>,
+    filter_cutoff_hz: Option<Spanned<f64>>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SensorFile {
+    name: String,
+    s_m: Spanned<f64>,
+    width_m: Spanned<f64>,
+}
+
+/// Read and resolve a case file. Every problem is reported with its file, line and column.
+pub fn from_file(path: &Path) -> Result<Setup> {
+    let src = SourceText::read(path)?;
+    from_source(&src)
+}
+
+/// Resolve a case from its text.
+pub fn from_source(src: &SourceText) -> Result<Setup> {
+    let f: CaseFile = src.parse_toml()?;
+    let opt = |v: &Option<Spanned<f64>>, what: &str| -> Result<Option<f64>> {
+        Ok(match v {
+            Some(x) => Some(positive(src, x, what)?),
+            None => None,
+        })
+    };
+    let section = match (&f.section.wedge, &f.section.points) {
+        (Some(w), None) => {
+            let wf = w.get_ref();
+            let beta = crate::input::in_range(src, &wf.deadrise_deg, 1.0, 89.0, "deadrise_deg")?;
+            let hb = positive(src, &wf.half_beam_m, "half_beam_m")?;
+            let zk = hb * beta.to_radians().tan();
+            let height = match &wf.height_m {
+                Some(hm) => {
+                    let hv = positive(src, hm, "height_m")?;
+                    if hv < zk {
+                        return Err(src
+                            .error(
+                                hm,
+                                format!("height_m must be at least the chine height {zk:.4} m"),
+                            )
+                            .into());
+                    }
+                    hv
+                }
+                None => zk,
+            };
+            Section::wedge(beta.to_radians(), hb, height)
+                .map_err(|e| src.error(w, e.to_string()))?
+        }
+        (None, Some(p)) => Section::from_half_points(p.get_ref().clone())
+            .map_err(|e| src.error(p, e.to_string()))?,
+        _ => {
+            return Err(Error::Input(src.error_at(
+                0..0,
+                "[section] needs exactly one of `wedge = {...}` or `points = [[y, z], ...]`",
+            )));
+        }
+    };
+    let m = &f.motion;
+    let need = |v: &Option<Spanned<f64>>, key: &str| -> Result<f64> {
+        match v {
+            Some(x) => Ok(positive(src, x, key)?),
+            None => Err(src
+                .error(&m.kind, format!("this motion kind needs `{key}`"))
+                .into()),
+        }
+    };
+    let motion = match m.kind.get_ref() {
+        MotionKind::Constant => MotionSpec::Constant {
+            speed_m_s: need(&m.speed_m_s, "speed_m_s")?,
+        },
+        MotionKind::Prescribed => {
+            let Some(table) = &m.table else {
+                return Err(src
+                    .error(
+                        &m.kind,
+                        "this motion kind needs `table = [[t_s, v_m_s], ...]`",
+                    )
+                    .into());
+            };
+            let rows = table.get_ref();
+            if rows.len() < 2 {
+                return Err(src
+                    .error(table, "the velocity table needs at least two rows")
+                    .into());
+            }
+            for (k, r) in rows.iter().enumerate() {
+                if !r[0].is_finite() || !r[1].is_finite() {
+                    return Err(src
+                        .error(table, format!("row {} of the table is not finite", k + 1))
+                        .into());
+                }
+                if k > 0 && r[0] <= rows[k - 1][0] {
+                    return Err(src
+                        .error(
+                            table,
+                            format!("table times must increase: row {} has t = {}", k + 1, r[0]),
+                        )
+                        .into());
+                }
+            }
+            MotionSpec::Prescribed {
+                table: rows.clone(),
+            }
+        }
+        MotionKind::FreeHeave => MotionSpec::FreeHeave {
+            mass_per_m_kg: need(&m.mass_per_m_kg, "mass_per_m_kg")?,
+            speed_m_s: need(&m.speed_m_s, "speed_m_s")?,
+        },
+    };
+    let mut sensors = Vec::new();
+    for s in &f.sensor {
+        sensors.push(SensorSpec {
+            name: s.name.clone(),
+            s_m: crate::input::finite(src, &s.s_m, "s_m")?,
+            width_m: positive(src, &s.width_m, "width_m")?,
+        });
+    }
+    let o = Overrides {
+        level: f.resolution.level,
+        particles_per_half_beam: opt(
+            &f.resolution.particles_per_half_beam,
+            "particles_per_half_beam",
+        )?,
+        dp: opt(&f.resolution.dp_m, "dp_m")?,
+        c0: opt(&f.numerics.c0_m_s, "c0_m_s")?,
+        h_over_dp: match &f.numerics.h_over_dp {
+            Some(v) => Some(crate::input::in_range(src, v, 1.0, 3.0, "h_over_dp")?),
+            None => None,
+        },
+        eos: f.numerics.eos,
+        delta: match &f.numerics.delta {
+            Some(v) => Some(crate::input::in_range(src, v, 0.0, 1.0, "delta")?),
+            None => None,
+        },
+        alpha: match &f.numerics.alpha {
+            Some(v) => Some(crate::input::in_range(src, v, 0.0, 1.0, "alpha")?),
+            None => None,
+        },
+        cfl: match &f.numerics.cfl {
+            Some(v) => Some(crate::input::in_range(src, v, 0.01, 0.5, "cfl")?),
+            None => None,
+        },
+        tank_half_width: opt(&f.tank.half_width_m, "half_width_m")?,
+        tank_depth: opt(&f.tank.depth_m, "depth_m")?,
+        tank_wall_height: opt(&f.tank.wall_height_m, "wall_height_m")?,
+        mirror: f.numerics.mirror,
+        t_end: opt(&f.run.t_end_s, "t_end_s")?,
+        snapshot_interval: opt(&f.run.snapshot_interval_s, "snapshot_interval_s")?,
+        filter_cutoff_hz: opt(&f.run.filter_cutoff_hz, "filter_cutoff_hz")?,
+    };
+    let name = f.name.clone().unwrap_or_else(|| {
+        src.path
+            .file_stem()
+            .map_or("case".into(), |s| s.to_string_lossy().into_owned())
+    });
+    let setup = resolve(&name, &section, &motion, sensors, &o)?;
+    // Sensor positions are checked against the contour here so the error can point at the file.
+    let len = crate::sph::body::half_contour_length(&section);
+    for (s, spec) in f.sensor.iter().zip(&setup.sensors) {
+        if !spec.fits(len) {
+            return Err(src
+                .error(
+                    &s.s_m,
+                    format!(
+                        "sensor '{}' (centre {} m, width {} m) must lie on the starboard contour, {len:.4} m long",
+                        spec.name, spec.s_m, spec.width_m
+                    ),
+                )
+                .into());
+        }
+    }
+    Ok(setup)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse(text: &str) -> Result<Setup> {
+        from_source(&SourceText::from_string("case.toml", text))
+    }
+
+    #[test]
+    fn resolves_a_wedge_case_and_records_the_choices() {
+        let s = parse(
+            "[section]\nwedge = { deadrise_deg = 30.0, half_beam_m = 0.25 }\n\
+             [motion]\nkind = \"constant\"\nspeed_m_s = 2.0\n",
+        )
+        .unwrap();
+        // c0 from Wagner's Cp at 30 deg: 2 sqrt(7.40 / 0.02) = 38.5 m/s, above 10 sqrt(g 0.75) = 27.1 m/s.
+        assert!(
+            (s.c0 - 2.0 * (7.402f64 / 0.02).sqrt()).abs() < 0.05,
+            "{}",
+            s.c0
+        );
+        assert!((s.dp - 0.25 / 40.0).abs() < 1e-12);
+        // No sides above the chine: the run stops when the keel is 0.9 x the section height down.
+        assert!((s.t_end - 0.9 * 0.25 * 30f64.to_radians().tan() / 2.0).abs() < 1e-9);
+        assert!(s.notes.iter().any(|n| n.starts_with("c0 =")));
+    }
+
+    #[test]
+    fn errors_name_line_and_column() {
+        let e = parse(
+            "[section]\nwedge = { deadrise_deg = 30.0, half_beam_m = 0.25 }\n\
+             [motion]\nkind = \"free_heave\"\nspeed_m_s = 2.0\n",
+        )
+        .unwrap_err();
+        let m = e.to_string();
+        assert!(
+            m.starts_with("case.toml:4:8:") && m.contains("mass_per_m_kg"),
+            "{m}"
+        );
+        let e = parse(
+            "[section]\nwedge = { deadrise_deg = 95.0, half_beam_m = 0.25 }\n\
+             [motion]\nkind = \"constant\"\nspeed_m_s = 2.0\n",
+        )
+        .unwrap_err();
+        assert!(e.to_string().starts_with("case.toml:2:26:"), "{e}");
+    }
+}

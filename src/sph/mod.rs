@@ -1,0 +1,260 @@
+//! 2D weakly compressible SPH for the water entry of a rigid section (the `entry` step of the 2D+t
+//! method; Veen 2010, ch. 5, with the formulation brought up to date as described in
+//! `solver.rs`).
+//!
+//! Layers, in the order the data flows: [`case`] (what to run, automatic choices) -> [`tank`], [`body`]
+//! (initial particles) -> [`solver`] (time loop: [`neighbours`], [`boundary`], [`diffusion`],
+//! [`integrator`]) -> [`sensors`] (histories) -> [`output`] (files) and [`crate::loads`] (peaks).
+
+pub mod body;
+pub mod boundary;
+pub mod case;
+pub mod counters;
+pub mod diffusion;
+pub mod eos;
+pub mod integrator;
+pub mod kernel;
+pub mod neighbours;
+pub mod output;
+pub mod particles;
+pub mod sensors;
+pub mod solver;
+pub mod tank;
+
+use std::io::Write as _;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use serde::Serialize;
+
+use crate::analytic::generalised_wagner;
+use crate::error::{Error, Result};
+use crate::files::write_text_atomic;
+use crate::loads::peaks::{Summary, summarise};
+
+pub use case::{Level, MotionSpec, Overrides, Setup};
+pub use counters::Counters;
+pub use sensors::{History, SensorSpec};
+pub use solver::Simulation;
+
+/// What to write during and after a run.
+#[derive(Debug, Clone, Default)]
+pub struct RunOptions {
+    /// Output folder; `None` writes nothing.
+    pub out_dir: Option<PathBuf>,
+    /// Print a progress line on stderr.
+    pub progress: bool,
+    /// Write VTK snapshots (needs `snapshot_interval` in the setup).
+    pub vtk: bool,
+    /// Write PNG frames (needs `snapshot_interval` in the setup).
+    pub png: bool,
+}
+
+/// Peak of one recorded quantity.
+#[derive(Debug, Clone, Serialize)]
+pub struct NamedSummary {
+    pub name: String,
+    pub unit: String,
+    #[serde(flatten)]
+    pub summary: Summary,
+}
+
+/// The result of a run, written as `summary.json` and printed by `--json`.
+#[derive(Debug, Clone, Serialize)]
+pub struct RunSummary {
+    pub name: String,
+    pub tool_version: String,
+    pub dp_m: f64,
+    pub h_m: f64,
+    pub c0_m_s: f64,
+    pub fluid_particles: usize,
+    pub total_particles: usize,
+    pub steps: u64,
+    pub t_end_s: f64,
+    pub wall_time_s: f64,
+    /// Why the run stopped early, if it did.
+    pub stopped_early: Option<String>,
+    /// Largest wall pressure on the contour (point value at the contour sampling), with time and place.
+    pub peak_contour_pressure_pa: f64,
+    pub peak_contour_pressure_time_s: f64,
+    pub peak_contour_pressure_s_m: f64,
+    /// Vertical section force (N per metre of section).
+    pub force: NamedSummary,
+    pub sensors: Vec<NamedSummary>,
+    /// Wagner theory (flat-plate approximation, Wagner condition for the actual shape) along the run's
+    /// velocity history, up to full wetting: peak force (N/m) and peak pressure (Pa) with their times.
+    pub wagner_peak_force_n_per_m: Option<f64>,
+    pub wagner_peak_force_time_s: Option<f64>,
+    pub wagner_peak_pressure_pa: Option<f64>,
+    pub counters: Counters,
+    pub setup: Setup,
+}
+
+/// The outcome of [`run`]: the summary and the full histories.
+#[derive(Debug, Clone)]
+pub struct RunResult {
+    pub summary: RunSummary,
+    pub history: History,
+}
+
+/// Run a resolved case to its end time, writing histories, summary and snapshots when an output folder is
+/// given. A run that diverges stops with an error that says why; the histories up to that point are
+/// written first.
+pub fn run(setup: Setup, opts: &RunOptions) -> Result<RunResult> {
+    let wall = Instant::now();
+    let mut sim = Simulation::new(setup)?;
+    let t_end = sim.setup.t_end;
+    let snap = sim.setup.snapshot_interval.filter(|_| opts.vtk || opts.png);
+    let mut frames: Vec<(f64, String)> = Vec::new();
+    let mut next_snap = 0.0;
+    let mut last_print = Instant::now();
+    let mut progress = |s: &Simulation| {
+        if opts.progress && last_print.elapsed().as_secs_f64() > 0.5 {
+            last_print = Instant::now();
+            eprint!(
+                "\r  t = {:8.3} ms / {:.3} ms  step {:7}  dt {:.2e} s  Fz {:10.1} N/m   ",
+                s.time * 1e3,
+                t_end * 1e3,
+                s.steps,
+                s.dt,
+                s.body.fz
+            );
+            let _ = std::io::stderr().flush();
+        }
+    };
+    let mut stopped = None;
+    loop {
+        if let (Some(dt_snap), Some(dir)) = (snap, &opts.out_dir)
+            && sim.time >= next_snap - 1e-12
+        {
+            let t0 = Instant::now();
+            write_snapshot(&sim, dir, frames.len(), opts, &mut frames)?;
+            next_snap += dt_snap;
+            sim.counters.add(counters::Stage::Output, t0.elapsed());
+        }
+        if sim.time >= t_end - 1e-12 {
+            break;
+        }
+        let stop = match snap {
+            Some(_) => next_snap.min(t_end),
+            None => t_end,
+        };
+        if let Err(why) = sim.run_until(stop, 50, &mut progress) {
+            stopped = Some(why);
+            break;
+        }
+    }
+    if opts.progress {
+        eprintln!();
+    }
+    let summary = summarise_run(&sim, wall.elapsed().as_secs_f64(), stopped.clone())?;
+    if let Some(dir) = &opts.out_dir {
+        write_text_atomic(&dir.join("history.csv"), &output::history_csv(&sim.history))?;
+        let json = serde_json::to_string_pretty(&summary).expect("summary serialises");
+        write_text_atomic(&dir.join("summary.json"), &json)?;
+        if !frames.is_empty() && opts.vtk {
+            output::write_pvd(&dir.join("particles.pvd"), &frames)?;
+        }
+    }
+    if let Some(why) = stopped {
+        let where_ = opts.out_dir.as_ref().map_or(String::new(), |d| {
+            format!("; histories so far written to {}", d.display())
+        });
+        return Err(Error::Numerical(format!(
+            "SPH run '{}' stopped at t = {:.6} s: {why}{where_}",
+            sim.setup.name, sim.time
+        )));
+    }
+    Ok(RunResult {
+        summary,
+        history: sim.history.clone(),
+    })
+}
+
+fn write_snapshot(
+    sim: &Simulation,
+    dir: &Path,
+    k: usize,
+    opts: &RunOptions,
+    frames: &mut Vec<(f64, String)>,
+) -> Result<()> {
+    if opts.vtk {
+        let name = format!("particles_{k:04}.vtu");
+        output::write_vtu(&dir.join(&name), &sim.pt)?;
+        frames.push((sim.time, name));
+    }
+    if opts.png {
+        let s = &sim.setup;
+        let b = sim
+            .section()
+            .map_or(s.tank_half_width, |x| x.half_breadth());
+        let hgt = sim.section().map_or(0.2 * s.tank_depth, |x| x.height());
+        let y1 = (2.0 * b).min(s.tank_half_width);
+        let window = [-y1, y1, -(1.5 * b).min(s.tank_depth), hgt.max(0.5 * b)];
+        // Colour scale: 0.01 rho0 c0^2, the expected peak pressure the sound speed was chosen for.
+        let p_scale = 0.01 * s.rho0 * s.c0 * s.c0;
+        output::write_png(
+            &dir.join(format!("frame_{k:04}.png")),
+            &sim.pt,
+            window,
+            1000,
+            p_scale,
+            s.mirror,
+        )?;
+    }
+    Ok(())
+}
+
+fn summarise_run(sim: &Simulation, wall_s: f64, stopped: Option<String>) -> Result<RunSummary> {
+    let h = &sim.history;
+    let s = &sim.setup;
+    let fc = s.filter_cutoff_hz;
+    let force = NamedSummary {
+        name: "fz".into(),
+        unit: "N/m".into(),
+        summary: summarise(&h.t, &h.fz, fc)?,
+    };
+    let mut sensors = Vec::new();
+    for (name, col) in h.sensor_names.iter().zip(&h.sensors) {
+        sensors.push(NamedSummary {
+            name: name.clone(),
+            unit: "Pa".into(),
+            summary: summarise(&h.t, col, fc)?,
+        });
+    }
+    let kmax = (0..h.len())
+        .max_by(|&a, &b| h.p_contour_max[a].total_cmp(&h.p_contour_max[b]))
+        .unwrap_or(0);
+    let (mut wf, mut wft, mut wp) = (None, None, None);
+    if let Some(sec) = sim.section() {
+        let e = generalised_wagner::estimate(sec.half_points(), &h.t, &h.v_down, s.rho0);
+        if let Some(k) = (0..e.t.len()).max_by(|&a, &b| e.force[a].total_cmp(&e.force[b])) {
+            wf = Some(e.force[k]);
+            wft = Some(e.t[k]);
+            wp = e.peak_pressure.iter().copied().reduce(f64::max);
+        }
+    }
+    Ok(RunSummary {
+        name: s.name.clone(),
+        tool_version: env!("CARGO_PKG_VERSION").into(),
+        dp_m: s.dp,
+        h_m: sim.kernel.h(),
+        c0_m_s: s.c0,
+        fluid_particles: sim.n_fluid(),
+        total_particles: sim.pt.len(),
+        steps: sim.steps,
+        t_end_s: sim.time,
+        wall_time_s: wall_s,
+        stopped_early: stopped,
+        peak_contour_pressure_pa: h.p_contour_max.get(kmax).copied().unwrap_or(0.0),
+        peak_contour_pressure_time_s: h.t.get(kmax).copied().unwrap_or(0.0),
+        peak_contour_pressure_s_m: h.s_at_p_max.get(kmax).copied().unwrap_or(0.0),
+        force,
+        sensors,
+        wagner_peak_force_n_per_m: wf,
+        wagner_peak_force_time_s: wft,
+        wagner_peak_pressure_pa: wp,
+        counters: sim.counters.clone(),
+        setup: s.clone(),
+    })
+}

@@ -1,0 +1,121 @@
+//! Particle storage: structure of arrays, kept sorted by neighbour-grid cell.
+
+use rayon::prelude::*;
+
+/// What a particle represents.
+#[repr(u8)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Kind {
+    /// Water.
+    Fluid = 0,
+    /// Dummy particle of a fixed tank wall.
+    Wall = 1,
+    /// Dummy particle of the moving body.
+    Body = 2,
+}
+
+/// All particles of a run. Position and velocity components are (y, z) in the 2D water-entry frame.
+#[derive(Debug, Clone, Default)]
+pub struct Particles {
+    pub y: Vec<f64>,
+    pub z: Vec<f64>,
+    pub vy: Vec<f64>,
+    pub vz: Vec<f64>,
+    /// Density (kg/m3): integrated for fluid, from the extrapolated pressure for dummies.
+    pub rho: Vec<f64>,
+    pub kind: Vec<Kind>,
+    /// Mass (kg per metre): rho dp^2 with the initial (hydrostatic) density, so that every particle starts
+    /// with the volume dp^2 of its lattice cell.
+    pub mass: Vec<f64>,
+    /// Volume m / rho (fluid) or dp^2 (dummies), refreshed with the pressures every step.
+    pub vol: Vec<f64>,
+    /// Pressure (Pa): equation of state for fluid, extrapolated (Adami et al. 2012) for dummies.
+    pub p: Vec<f64>,
+    /// Time derivatives of (vy, vz, rho) of fluid particles.
+    pub rate: Vec<[f64; 3]>,
+    /// Renormalised density gradient of fluid particles (Antuono et al. 2010).
+    pub grad_rho: Vec<[f64; 2]>,
+    scratch: Vec<f64>,
+    scratch_kind: Vec<Kind>,
+}
+
+impl Particles {
+    pub fn len(&self) -> usize {
+        self.y.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.y.is_empty()
+    }
+
+    /// Add one particle.
+    #[allow(clippy::too_many_arguments)]
+    pub fn push(
+        &mut self,
+        kind: Kind,
+        y: f64,
+        z: f64,
+        vy: f64,
+        vz: f64,
+        rho: f64,
+        p: f64,
+        vol: f64,
+    ) {
+        self.y.push(y);
+        self.z.push(z);
+        self.vy.push(vy);
+        self.vz.push(vz);
+        self.rho.push(rho);
+        self.kind.push(kind);
+        self.mass.push(rho * vol);
+        self.vol.push(vol);
+        self.p.push(p);
+        self.rate.push([0.0; 3]);
+        self.grad_rho.push([0.0; 2]);
+    }
+
+    /// Number of particles of a kind.
+    pub fn count(&self, kind: Kind) -> usize {
+        self.kind.iter().filter(|&&k| k == kind).count()
+    }
+
+    /// Reorder the state arrays so that new position k holds old particle `order[k]`. Rates and gradients
+    /// are recomputed after every sort and are not carried over (volumes are, for the first pass after
+    /// the sort).
+    pub fn permute(&mut self, order: &[u32]) {
+        let n = self.len();
+        self.scratch.resize(n, 0.0);
+        self.scratch_kind.resize(n, Kind::Fluid);
+        for a in [
+            &mut self.y,
+            &mut self.z,
+            &mut self.vy,
+            &mut self.vz,
+            &mut self.rho,
+            &mut self.p,
+            &mut self.mass,
+            &mut self.vol,
+        ] {
+            let src: &Vec<f64> = a;
+            self.scratch
+                .par_iter_mut()
+                .with_min_len(4096)
+                .zip(order.par_iter())
+                .for_each(|(d, &k)| *d = src[k as usize]);
+            std::mem::swap(a, &mut self.scratch);
+        }
+        let src = &self.kind;
+        self.scratch_kind
+            .par_iter_mut()
+            .with_min_len(4096)
+            .zip(order.par_iter())
+            .for_each(|(d, &k)| *d = src[k as usize]);
+        std::mem::swap(&mut self.kind, &mut self.scratch_kind);
+    }
+
+    /// Bytes of particle storage per particle (state, rates, gradients and sort scratch).
+    pub fn bytes_per_particle() -> usize {
+        // y z vy vz rho p mass vol + scratch: 9 f64; kind + scratch kind: 2 bytes; rate 3 f64; grad 2 f64.
+        9 * 8 + 2 + 3 * 8 + 2 * 8
+    }
+}

@@ -1,0 +1,154 @@
+//! Pressure sensors on the body contour and the recorded time histories.
+//!
+//! A sensor is a stretch of the starboard contour, centred at arc length s from the keel, of physical
+//! width w (a real transducer's diameter). Its pressure is the mean wall pressure over that width, from
+//! points at spacing at most dp/4, each evaluated with the Adami et al. (2012) extrapolation.
+
+use serde::{Deserialize, Serialize};
+
+use crate::error::{Error, Result};
+use crate::sph::body::{self, Section};
+use crate::sph::solver::BodyState;
+
+/// One sensor as given in a case.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SensorSpec {
+    /// Name used as the CSV column and JSON key.
+    pub name: String,
+    /// Arc length from the keel along the starboard contour to the sensor centre (m).
+    pub s_m: f64,
+    /// Physical width of the sensor along the contour (m).
+    pub width_m: f64,
+}
+
+impl SensorSpec {
+    /// Whether the sensor lies on a starboard contour `len` long (m), with a positive width.
+    pub fn fits(&self, len: f64) -> bool {
+        self.width_m > 0.0
+            && self.s_m - 0.5 * self.width_m >= 0.0
+            && self.s_m + 0.5 * self.width_m <= len
+    }
+}
+
+/// Sensors with their sample points (body frame).
+#[derive(Debug, Clone, Default)]
+pub struct SensorSet {
+    names: Vec<String>,
+    /// (sensor index, y, z) of every sample point.
+    points: Vec<(usize, f64, f64)>,
+    counts: Vec<usize>,
+    values: Vec<f64>,
+}
+
+impl SensorSet {
+    pub fn new(specs: &[SensorSpec], section: Option<&Section>, dp: f64) -> Result<Self> {
+        let mut set = SensorSet::default();
+        if specs.is_empty() {
+            return Ok(set);
+        }
+        let Some(sec) = section else {
+            return Err(Error::Invalid("sensors need a body section".into()));
+        };
+        let len = body::half_contour_length(sec);
+        for (k, s) in specs.iter().enumerate() {
+            if !s.fits(len) {
+                return Err(Error::Invalid(format!(
+                    "sensor '{}' (centre {} m, width {} m along the contour) must lie on the starboard \
+                     contour, which is {:.4} m long from the keel",
+                    s.name, s.s_m, s.width_m, len
+                )));
+            }
+            let n = ((s.width_m / (0.25 * dp)).ceil() as usize).max(3);
+            for i in 0..n {
+                let a = s.s_m - 0.5 * s.width_m + (i as f64 + 0.5) / n as f64 * s.width_m;
+                let p = body::point_at_arc(sec, a).expect("inside the contour");
+                set.points.push((k, p[0], p[1]));
+            }
+            set.names.push(s.name.clone());
+            set.counts.push(n);
+        }
+        set.values = vec![0.0; specs.len()];
+        Ok(set)
+    }
+
+    pub fn names(&self) -> &[String] {
+        &self.names
+    }
+
+    pub fn values(&self) -> &[f64] {
+        &self.values
+    }
+
+    /// Sample all sensors with the body keel at `z_keel`, given a wall-pressure function of (y, z).
+    pub fn sample(&mut self, z_keel: f64, pressure: &impl Fn(f64, f64) -> f64) {
+        self.values.iter_mut().for_each(|v| *v = 0.0);
+        for &(k, y, z) in &self.points {
+            self.values[k] += pressure(y, z + z_keel);
+        }
+        for (v, &n) in self.values.iter_mut().zip(&self.counts) {
+            *v /= n as f64;
+        }
+    }
+}
+
+/// Time histories sampled every step.
+#[derive(Debug, Clone, Default, Serialize)]
+pub struct History {
+    pub t: Vec<f64>,
+    pub z_keel: Vec<f64>,
+    pub v_down: Vec<f64>,
+    pub a_down: Vec<f64>,
+    pub fz: Vec<f64>,
+    pub fy: Vec<f64>,
+    pub fy_starboard: Vec<f64>,
+    /// Largest wall pressure on the contour samples (Pa) and its arc length from the keel (m; negative on
+    /// the port half).
+    pub p_contour_max: Vec<f64>,
+    pub s_at_p_max: Vec<f64>,
+    pub sensor_names: Vec<String>,
+    pub sensors: Vec<Vec<f64>>,
+}
+
+impl History {
+    /// Empty histories with room for `steps` samples (no reallocation in the time loop).
+    pub fn new(set: &SensorSet, steps: usize) -> Self {
+        let col = || Vec::with_capacity(steps);
+        Self {
+            t: col(),
+            z_keel: col(),
+            v_down: col(),
+            a_down: col(),
+            fz: col(),
+            fy: col(),
+            fy_starboard: col(),
+            p_contour_max: col(),
+            s_at_p_max: col(),
+            sensor_names: set.names().to_vec(),
+            sensors: set.names().iter().map(|_| col()).collect(),
+        }
+    }
+
+    pub fn push(&mut self, t: f64, b: &BodyState, sensors: &[f64]) {
+        self.t.push(t);
+        self.z_keel.push(b.z_keel);
+        self.v_down.push(b.v_down);
+        self.a_down.push(b.a_down);
+        self.fz.push(b.fz);
+        self.fy.push(b.fy);
+        self.fy_starboard.push(b.fy_starboard);
+        self.p_contour_max.push(b.p_contour_max);
+        self.s_at_p_max.push(b.s_at_p_max);
+        for (c, &v) in self.sensors.iter_mut().zip(sensors) {
+            c.push(v);
+        }
+    }
+
+    pub fn len(&self) -> usize {
+        self.t.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.t.is_empty()
+    }
+}

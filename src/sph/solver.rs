@@ -1,0 +1,580 @@
+//! The weakly compressible SPH solver: builds the particles of a [`Setup`], advances them in time and
+//! records the body motion, the section force and the sensor pressures every step.
+//!
+//! Equations (2D, per fluid particle i, sums over neighbours j including wall/body dummies and, with a
+//! symmetry plane, mirror images; V_j = m / rho_j, grad_i W_ij from the Wendland C2 kernel):
+//!
+//! * continuity with delta-SPH diffusion (Antuono et al. 2010):
+//!   D rho_i / Dt = rho_i sum_j (v_i - v_j) . grad_i W_ij V_j + delta h c0 sum_j psi_ij . grad_i W_ij V_j
+//! * momentum (Antuono et al. 2010, eq. 2.2 with the artificial viscosity of Monaghan 1992 between fluid
+//!   particles; free slip at the walls):
+//!   D v_i / Dt = -sum_j (p_i + p_j)/rho_i grad_i W_ij V_j
+//!   + alpha h c0 rho0/rho_i sum_j pi_ij grad_i W_ij V_j + g;
+//! * artificial viscosity kernel: pi_ij = (v_i - v_j) . (r_i - r_j) / (|r_ij|^2 + 0.01 h^2);
+//! * equation of state: [`crate::sph::eos`]; wall pressure: [`crate::sph::boundary::adami2012`].
+//!
+//! Every sum is a gather over the neighbours of one particle in the fixed cell-sorted order, so the
+//! results are bit-identical on any number of threads.
+
+use rayon::prelude::*;
+
+use crate::error::{Error, Result};
+use crate::sph::body::{self, ContourPoint, Motion, Section};
+use crate::sph::boundary::adami2012;
+use crate::sph::case::Setup;
+use crate::sph::counters::{Counters, Stage};
+use crate::sph::diffusion::antuono2010;
+use crate::sph::eos::Eos;
+use crate::sph::integrator;
+use crate::sph::kernel::WendlandC2;
+use crate::sph::neighbours::{Grid, for_each_neighbour};
+use crate::sph::particles::{Kind, Particles};
+use crate::sph::sensors::{History, SensorSet};
+use crate::sph::tank::Tank;
+
+/// Fraction of full support (Shepard sum of a fully wetted flat wall is about 1/2) below which a wall
+/// point counts as dry and gets zero pressure.
+pub const DRY_SHEPARD: f64 = 0.1;
+
+/// The state of the rigid body (heave only).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct BodyState {
+    /// z of the keel in the water-entry frame (m); 0 at t = 0, negative once immersed.
+    pub z_keel: f64,
+    /// Downward speed (m/s).
+    pub v_down: f64,
+    /// Downward acceleration (m/s^2).
+    pub a_down: f64,
+    /// Upward water force on the whole section (N/m).
+    pub fz: f64,
+    /// Horizontal (+y) water force on the whole section (N/m); zero by construction with a symmetry plane.
+    pub fy: f64,
+    /// Horizontal (+y) water force on the starboard half (N/m).
+    pub fy_starboard: f64,
+    /// Largest wall pressure over the contour samples (Pa) and its arc length from the keel (m).
+    pub p_contour_max: f64,
+    pub s_at_p_max: f64,
+}
+
+/// A running simulation.
+pub struct Simulation {
+    pub setup: Setup,
+    pub kernel: WendlandC2,
+    pub eos: Eos,
+    /// Volume of a dummy particle, dp^2 (m^2).
+    pub dummy_vol: f64,
+    pub pt: Particles,
+    grid: Grid,
+    section: Option<Section>,
+    motion: Option<Motion>,
+    contour: Vec<ContourPoint>,
+    contour_p: Vec<f64>,
+    /// The closed section contour (body frame), for the check that no fluid went through the body.
+    closed_contour: Vec<[f64; 2]>,
+    sensors: SensorSet,
+    pub body: BodyState,
+    pub time: f64,
+    pub dt: f64,
+    dt_first: f64,
+    pub steps: u64,
+    pub counters: Counters,
+    pub history: History,
+}
+
+impl Simulation {
+    /// Build the particles and the neighbour grid of a resolved case and evaluate the initial rates.
+    pub fn new(setup: Setup) -> Result<Self> {
+        let dp = setup.dp;
+        let h = setup.h_over_dp * dp;
+        let kernel = WendlandC2::new(h);
+        let eos = Eos {
+            kind: setup.eos,
+            rho0: setup.rho0,
+            c0: setup.c0,
+        };
+        let layers = (kernel.support() / dp).ceil() as usize;
+        let mirror = setup.mirror;
+        let section = match &setup.section_points {
+            Some(p) => Some(Section::from_half_points(p.clone())?),
+            None => None,
+        };
+        let motion = match &setup.motion {
+            Some(m) => Some(m.build()?),
+            None => None,
+        };
+        let tank = Tank {
+            half_width: setup.tank_half_width,
+            depth: setup.tank_depth,
+            wall_height: setup.tank_wall_height,
+        };
+        let mut pt = Particles::default();
+        tank.fill(&mut pt, dp, layers, mirror, &eos, setup.g);
+        let mut body = BodyState::default();
+        let mut contour = Vec::new();
+        if let (Some(sec), Some(mot)) = (&section, &motion) {
+            let v0 = mot.initial_speed();
+            body.v_down = v0;
+            body.a_down = mot.accel_at(0.0).unwrap_or(setup.g);
+            let y_min = if mirror { 0.25 * dp } else { f64::NEG_INFINITY };
+            for p in body::dummy_points(sec, dp, layers, y_min) {
+                pt.push(Kind::Body, p[0], p[1], 0.0, -v0, setup.rho0, 0.0, dp * dp);
+            }
+            contour = body::contour_points(sec, 0.5 * dp, !mirror);
+        }
+        let sensors = SensorSet::new(&setup.sensors, section.as_ref(), dp)?;
+        let l = layers as f64 * dp;
+        let y0 = if mirror { 0.0 } else { -tank.half_width - l };
+        let top = tank
+            .wall_height
+            .max(section.as_ref().map_or(0.0, |s| s.height()))
+            + 2.0 * l;
+        let grid = Grid::new(
+            y0,
+            tank.half_width + l,
+            -tank.depth - l,
+            top,
+            kernel.h(),
+            mirror,
+        );
+        let history = History::new(&sensors, setup.expected_steps());
+        let n = contour.len();
+        let closed_contour = section.as_ref().map_or(Vec::new(), |s| s.closed_contour());
+        let mut sim = Self {
+            dummy_vol: dp * dp,
+            kernel,
+            eos,
+            pt,
+            grid,
+            section,
+            motion,
+            contour,
+            contour_p: vec![0.0; n],
+            closed_contour,
+            sensors,
+            body,
+            time: 0.0,
+            dt: 0.0,
+            dt_first: 0.0,
+            steps: 0,
+            counters: Counters::default(),
+            history,
+            setup,
+        };
+        sim.sort();
+        sim.evaluate_momentum();
+        sim.sample_body();
+        sim.record();
+        let (v, a) = integrator::max_speed_accel(&sim.pt);
+        sim.dt_first = integrator::time_step(
+            sim.setup.cfl,
+            h,
+            sim.setup.c0,
+            v.max(sim.body.v_down.abs()),
+            a,
+        );
+        Ok(sim)
+    }
+
+    /// Number of fluid particles.
+    pub fn n_fluid(&self) -> usize {
+        self.pt.count(Kind::Fluid)
+    }
+
+    /// The section, when there is a body.
+    pub fn section(&self) -> Option<&Section> {
+        self.section.as_ref()
+    }
+
+    fn sort(&mut self) {
+        let t0 = std::time::Instant::now();
+        let order = self.grid.sort(&self.pt.y, &self.pt.z);
+        self.pt.permute(order);
+        self.counters.add(Stage::Sort, t0.elapsed());
+    }
+
+    /// Body acceleration vector (y, z) in the water-entry frame.
+    fn body_accel(&self) -> [f64; 2] {
+        [0.0, -self.body.a_down]
+    }
+
+    /// Continuity pass at the current positions: density rates (with the density gradients of the last
+    /// momentum pass, which ran at these same positions and densities).
+    fn evaluate_continuity(&mut self) {
+        let (grid, kernel) = (&self.grid, &self.kernel);
+        let pt = &mut self.pt;
+        let s = &self.setup;
+        self.counters
+            .time(Stage::Continuity, || continuity_rates(grid, pt, kernel, s));
+    }
+
+    /// Momentum pass at the current positions: wall and body pressures, then accelerations and the
+    /// renormalised density gradients.
+    fn evaluate_momentum(&mut self) {
+        let (grid, kernel, eos, vol, g) = (
+            &self.grid,
+            &self.kernel,
+            &self.eos,
+            self.dummy_vol,
+            self.setup.g,
+        );
+        let acc = [0.0, -self.body.a_down];
+        let pt = &mut self.pt;
+        self.counters.time(Stage::Boundary, || {
+            adami2012::update_pressures(grid, pt, kernel, eos, vol, g, acc)
+        });
+        let s = &self.setup;
+        let n = self
+            .counters
+            .time(Stage::Momentum, || momentum_rates(grid, pt, kernel, s));
+        self.counters.interactions += n;
+    }
+
+    /// Wall pressure on the contour and sensors; integrate the section force.
+    fn sample_body(&mut self) {
+        let t0 = std::time::Instant::now();
+        let acc = self.body_accel();
+        let zk = self.body.z_keel;
+        let (grid, pt, kernel, eos, g) =
+            (&self.grid, &self.pt, &self.kernel, &self.eos, self.setup.g);
+        let sample = |y: f64, z: f64| {
+            let (p, shepard) = adami2012::wall_pressure(grid, pt, kernel, eos, g, y, z, acc);
+            if shepard < DRY_SHEPARD { 0.0 } else { p }
+        };
+        self.contour_p
+            .par_iter_mut()
+            .with_min_len(16)
+            .zip(self.contour.par_iter())
+            .for_each(|(p, c)| *p = sample(c.y, c.z + zk));
+        let (mut fy, mut fz, mut fy_s) = (0.0, 0.0, 0.0);
+        let (mut p_max, mut s_max) = (0.0, 0.0);
+        for (c, &p) in self.contour.iter().zip(&self.contour_p) {
+            if p > p_max {
+                p_max = p;
+                s_max = c.s;
+            }
+            // Force on the body: -p n ds with n the outward normal.
+            fy -= p * c.ny * c.ds;
+            fz -= p * c.nz * c.ds;
+            if c.y >= 0.0 {
+                fy_s -= p * c.ny * c.ds;
+            }
+        }
+        if self.setup.mirror {
+            fz *= 2.0;
+            fy = 0.0;
+        }
+        self.body.fy = fy;
+        self.body.fz = fz;
+        self.body.fy_starboard = fy_s;
+        self.body.p_contour_max = p_max;
+        self.body.s_at_p_max = s_max;
+        self.sensors.sample(zk, &sample);
+        self.counters.add(Stage::Sensors, t0.elapsed());
+    }
+
+    fn record(&mut self) {
+        self.history
+            .push(self.time, &self.body, self.sensors.values());
+    }
+
+    /// Advance one time step. An `Err` describes why the run cannot go on (the state is left as it was at
+    /// the failure, for inspection).
+    pub fn step(&mut self) -> std::result::Result<(), String> {
+        let h = self.kernel.h();
+        let (v_max, a_max) = integrator::max_speed_accel(&self.pt);
+        if !v_max.is_finite() || !a_max.is_finite() {
+            return Err(self.nan_diagnostic());
+        }
+        let dt = integrator::time_step(
+            self.setup.cfl,
+            h,
+            self.setup.c0,
+            v_max.max(self.body.v_down.abs()),
+            a_max,
+        );
+        if dt < 1e-3 * self.dt_first {
+            return Err(format!(
+                "time step collapsed to {dt:.3e} s (first step {:.3e} s): largest fluid speed {v_max:.3} m/s, \
+                 largest acceleration {a_max:.3e} m/s^2",
+                self.dt_first
+            ));
+        }
+        self.dt = dt;
+        let t_mid = self.time + 0.5 * dt;
+        let t_new = self.time + dt;
+        let t0 = std::time::Instant::now();
+        integrator::kick(&mut self.pt, dt);
+        let v_half = match &self.motion {
+            Some(m) => m
+                .speed_at(t_mid)
+                .unwrap_or(self.body.v_down + 0.5 * dt * self.body.a_down),
+            None => 0.0,
+        };
+        if self.motion.is_some() {
+            integrator::move_body(&mut self.pt, 0.0, 0.0, [0.0, -v_half]);
+        }
+        self.counters.add(Stage::Integrate, t0.elapsed());
+        self.evaluate_continuity();
+        let t0 = std::time::Instant::now();
+        integrator::drift(&mut self.pt, dt, self.setup.mirror);
+        if self.motion.is_some() {
+            self.body.z_keel -= dt * v_half;
+            integrator::move_body(&mut self.pt, 0.0, -dt * v_half, [0.0, -v_half]);
+            if let Some(a) = self.motion.as_ref().and_then(|m| m.accel_at(t_new)) {
+                self.body.a_down = a;
+            }
+        }
+        self.time = t_new;
+        self.counters.add(Stage::Integrate, t0.elapsed());
+        self.sort();
+        self.evaluate_momentum();
+        self.sample_body();
+        let t0 = std::time::Instant::now();
+        integrator::kick(&mut self.pt, dt);
+        if let Some(m) = &self.motion {
+            match m {
+                Motion::FreeHeave { mass_per_m, .. } => {
+                    self.body.a_down = self.setup.g - self.body.fz / mass_per_m;
+                    self.body.v_down = v_half + 0.5 * dt * self.body.a_down;
+                }
+                _ => self.body.v_down = m.speed_at(t_new).unwrap_or(v_half),
+            }
+        }
+        self.counters.add(Stage::Integrate, t0.elapsed());
+        self.steps += 1;
+        self.counters.steps += 1;
+        self.counters.particle_steps += self.pt.len() as u64;
+        self.record();
+        if self.steps % 20 == 0 {
+            self.check_body_penetration()?;
+        }
+        Ok(())
+    }
+
+    /// Run until `t_stop` (or the first failure). `progress` is called every `every` steps.
+    pub fn run_until(
+        &mut self,
+        t_stop: f64,
+        every: u64,
+        progress: &mut dyn FnMut(&Simulation),
+    ) -> std::result::Result<(), String> {
+        while self.time < t_stop - 1e-12 {
+            self.step()?;
+            if every > 0 && self.steps % every == 0 {
+                progress(self);
+            }
+        }
+        Ok(())
+    }
+
+    fn nan_diagnostic(&self) -> String {
+        for i in 0..self.pt.len() {
+            let bad = [
+                self.pt.y[i],
+                self.pt.z[i],
+                self.pt.vy[i],
+                self.pt.vz[i],
+                self.pt.rho[i],
+            ]
+            .iter()
+            .any(|v| !v.is_finite());
+            if bad || self.pt.rate[i].iter().any(|v| !v.is_finite()) {
+                return format!(
+                    "non-finite state at t = {:.6} s (step {}): {:?} particle at (y, z) = ({:.4}, {:.4}) m, \
+                     velocity ({:.3}, {:.3}) m/s, density {:.3} kg/m3",
+                    self.time,
+                    self.steps,
+                    self.pt.kind[i],
+                    self.pt.y[i],
+                    self.pt.z[i],
+                    self.pt.vy[i],
+                    self.pt.vz[i],
+                    self.pt.rho[i]
+                );
+            }
+        }
+        format!(
+            "non-finite state at t = {:.6} s (step {})",
+            self.time, self.steps
+        )
+    }
+
+    /// Fail when fluid particles have gone through the body (deeper than two particle spacings inside).
+    fn check_body_penetration(&self) -> std::result::Result<(), String> {
+        let Some(sec) = &self.section else {
+            return Ok(());
+        };
+        let dp = self.setup.dp;
+        let zk = self.body.z_keel;
+        let (hb, ht) = (sec.half_breadth(), sec.height());
+        let contour = &self.closed_contour;
+        let (count, deepest) = (0..self.pt.len())
+            .into_par_iter()
+            .with_min_len(4096)
+            .map(|i| {
+                if self.pt.kind[i] != Kind::Fluid {
+                    return (0u64, 0.0);
+                }
+                let (y, z) = (self.pt.y[i], self.pt.z[i] - zk);
+                if y.abs() > hb || z < 0.0 || z > ht || !sec.contains(y, z) {
+                    return (0, 0.0);
+                }
+                let d = body::distance_to_polyline(contour, y, z);
+                if d > 2.0 * dp { (1, d) } else { (0, 0.0) }
+            })
+            .reduce(|| (0, 0.0), |a, b| (a.0 + b.0, a.1.max(b.1)));
+        if count > 0 {
+            return Err(format!(
+                "{count} fluid particle(s) went through the body surface at t = {:.6} s (deepest {:.2} mm \
+                 inside, particle spacing {:.2} mm); try a finer resolution or a smaller Courant number",
+                self.time,
+                deepest * 1e3,
+                dp * 1e3
+            ));
+        }
+        Ok(())
+    }
+
+    /// Bytes of particle storage per particle.
+    pub fn bytes_per_particle(&self) -> usize {
+        Particles::bytes_per_particle() + 8 // + cell index and sort order (2 x u32)
+    }
+
+    /// Wall pressure at a point of a fixed wall (hydrostatic checks).
+    pub fn fixed_wall_pressure(&self, y: f64, z: f64) -> f64 {
+        adami2012::wall_pressure(
+            &self.grid,
+            &self.pt,
+            &self.kernel,
+            &self.eos,
+            self.setup.g,
+            y,
+            z,
+            [0.0; 2],
+        )
+        .0
+    }
+
+    /// The pressure sensors of this run.
+    pub fn sensors(&self) -> &SensorSet {
+        &self.sensors
+    }
+
+    /// An error for a failed run, naming the time and the reason.
+    pub fn failure(&self, why: &str) -> Error {
+        Error::Numerical(format!("SPH run stopped at t = {:.6} s: {why}", self.time))
+    }
+}
+
+/// Density rate of every fluid particle (continuity with delta-SPH diffusion) into `rate[i][2]`.
+fn continuity_rates(grid: &Grid, pt: &mut Particles, kernel: &WendlandC2, s: &Setup) {
+    let delta_term = s.delta * kernel.h() * s.c0;
+    let mut out = std::mem::take(&mut pt.rate);
+    {
+        let pt: &Particles = pt;
+        out.par_iter_mut()
+            .with_min_len(256)
+            .enumerate()
+            .for_each(|(i, out)| {
+                if pt.kind[i] != Kind::Fluid {
+                    out[2] = 0.0;
+                    return;
+                }
+                let (yi, zi, vyi, vzi, rho_i) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i], pt.rho[i]);
+                let gi = pt.grad_rho[i];
+                let (mut div, mut diff) = (0.0, 0.0);
+                for_each_neighbour(
+                    grid,
+                    &pt.y,
+                    &pt.z,
+                    yi,
+                    zi,
+                    i,
+                    kernel.support2(),
+                    |j, dy, dz, r2, mirrored| {
+                        let rho_j = pt.rho[j];
+                        let fw = kernel.grad_factor(r2.sqrt()) * pt.vol[j];
+                        let (vyj, gj) = if mirrored {
+                            (-pt.vy[j], [-pt.grad_rho[j][0], pt.grad_rho[j][1]])
+                        } else {
+                            (pt.vy[j], pt.grad_rho[j])
+                        };
+                        div += fw * ((vyi - vyj) * dy + (vzi - pt.vz[j]) * dz);
+                        // Diffusion only between fluid particles: a flux to a dummy particle would
+                        // be a mass flux through the wall.
+                        if pt.kind[j] == Kind::Fluid {
+                            let gsum = [gi[0] + gj[0], gi[1] + gj[1]];
+                            diff += antuono2010::pair_term(fw, dy, dz, rho_i, rho_j, gsum);
+                        }
+                    },
+                );
+                out[2] = rho_i * div + delta_term * diff;
+            });
+    }
+    pt.rate = out;
+}
+
+/// Acceleration of every fluid particle into `rate[i][0..2]` and its renormalised density gradient into
+/// `grad_rho[i]`; returns the number of pair interactions.
+fn momentum_rates(grid: &Grid, pt: &mut Particles, kernel: &WendlandC2, s: &Setup) -> u64 {
+    let h = kernel.h();
+    let visc = s.alpha * h * s.c0 * s.rho0;
+    let eps2 = 0.01 * h * h;
+    let g = s.g;
+    let mut out = std::mem::take(&mut pt.rate);
+    let mut grad = std::mem::take(&mut pt.grad_rho);
+    let n = {
+        let pt: &Particles = pt;
+        out.par_iter_mut()
+            .zip(grad.par_iter_mut())
+            .with_min_len(256)
+            .enumerate()
+            .map(|(i, (out, grad))| {
+                if pt.kind[i] != Kind::Fluid {
+                    out[0] = 0.0;
+                    out[1] = 0.0;
+                    *grad = [0.0; 2];
+                    return 0u64;
+                }
+                let (yi, zi, vyi, vzi) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i]);
+                let (rho_i, p_i) = (pt.rho[i], pt.p[i]);
+                let (mut ay, mut az, mut vy_acc, mut vz_acc) = (0.0, 0.0, 0.0, 0.0);
+                let mut sums = antuono2010::GradientSums::default();
+                let mut count = 0u64;
+                for_each_neighbour(
+                    grid,
+                    &pt.y,
+                    &pt.z,
+                    yi,
+                    zi,
+                    i,
+                    kernel.support2(),
+                    |j, dy, dz, r2, mirrored| {
+                        count += 1;
+                        let rho_j = pt.rho[j];
+                        let fw = kernel.grad_factor(r2.sqrt()) * pt.vol[j];
+                        let pf = (p_i + pt.p[j]) * fw;
+                        ay -= pf * dy;
+                        az -= pf * dz;
+                        sums.add(fw, dy, dz, rho_j - rho_i);
+                        if pt.kind[j] == Kind::Fluid {
+                            let vyj = if mirrored { -pt.vy[j] } else { pt.vy[j] };
+                            let vdotd = (vyi - vyj) * dy + (vzi - pt.vz[j]) * dz;
+                            let pi = vdotd / (r2 + eps2) * fw;
+                            vy_acc += pi * dy;
+                            vz_acc += pi * dz;
+                        }
+                    },
+                );
+                let inv_rho = 1.0 / rho_i;
+                out[0] = (ay + visc * vy_acc) * inv_rho;
+                out[1] = (az + visc * vz_acc) * inv_rho - g;
+                *grad = sums.gradient();
+                count
+            })
+            .sum()
+    };
+    pt.grad_rho = grad;
+    pt.rate = out;
+    n
+}

@@ -1,0 +1,96 @@
+//! The tank: a rectangle of water at rest (hydrostatic pressure) with dummy-particle walls at the sides and
+//! the bottom. With a symmetry plane only the half y >= 0 is built.
+
+use crate::sph::eos::Eos;
+use crate::sph::particles::{Kind, Particles};
+
+/// Tank geometry in the 2D water-entry frame (free surface at z = 0).
+#[derive(Debug, Clone, Copy)]
+pub struct Tank {
+    /// Half-width of the water (m): the side walls are at y = +-half_width.
+    pub half_width: f64,
+    /// Water depth (m): the bottom is at z = -depth.
+    pub depth: f64,
+    /// Height of the side walls above the calm water surface (m).
+    pub wall_height: f64,
+}
+
+impl Tank {
+    /// Fill with fluid on a square lattice of spacing dp (cell centres) and add `layers` layers of wall
+    /// dummy particles. Pressures and densities are hydrostatic, p = rho0 g (-z); each fluid particle's mass
+    /// is its initial density times dp^2, so the lattice is in equilibrium from the start (a uniform mass
+    /// rho0 dp^2 with hydrostatic densities gives particle volumes smaller than the lattice cells, and a
+    /// still tank then settles to a bottom pressure about rho g D (1 + rho0 g D / (rho0 c0^2)) too high).
+    pub fn fill(
+        &self,
+        pt: &mut Particles,
+        dp: f64,
+        layers: usize,
+        mirror: bool,
+        eos: &Eos,
+        g: f64,
+    ) {
+        let ny = (self.half_width / dp).round() as i64;
+        let nz = (self.depth / dp).round() as i64;
+        let y_start = if mirror { 0 } else { -ny };
+        let hydro = |z: f64| eos.rho0 * g * (-z);
+        for k in 0..nz {
+            let z = -(k as f64 + 0.5) * dp;
+            let p = hydro(z);
+            for i in y_start..ny {
+                let y = (i as f64 + 0.5) * dp;
+                pt.push(Kind::Fluid, y, z, 0.0, 0.0, eos.density(p), p, dp * dp);
+            }
+        }
+        let l = layers as i64;
+        let zb = -(nz as f64) * dp;
+        let y_lo = if mirror { 0 } else { -ny - l };
+        // Bottom (under the water and the side walls).
+        for k in 0..l {
+            let z = zb - (k as f64 + 0.5) * dp;
+            let p = hydro(z);
+            for i in y_lo..ny + l {
+                pt.push(
+                    Kind::Wall,
+                    (i as f64 + 0.5) * dp,
+                    z,
+                    0.0,
+                    0.0,
+                    eos.density(p),
+                    p,
+                    dp * dp,
+                );
+            }
+        }
+        // Side walls from the bottom up to wall_height.
+        let n_up = nz + (self.wall_height / dp).ceil() as i64;
+        for k in 0..n_up {
+            let z = zb + (k as f64 + 0.5) * dp;
+            let p = hydro(z).max(0.0);
+            for m in 0..l {
+                pt.push(
+                    Kind::Wall,
+                    (ny + m) as f64 * dp + 0.5 * dp,
+                    z,
+                    0.0,
+                    0.0,
+                    eos.density(p),
+                    p,
+                    dp * dp,
+                );
+                if !mirror {
+                    pt.push(
+                        Kind::Wall,
+                        -((ny + m) as f64 * dp + 0.5 * dp),
+                        z,
+                        0.0,
+                        0.0,
+                        eos.density(p),
+                        p,
+                        dp * dp,
+                    );
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,558 @@
+//! SPH validation at coarse resolution (default suite) and finer resolution (`--ignored`).
+//!
+//! Reference data are in `data/reference/` with their provenance; the numbers used here are copied from
+//! those files with the file named beside them. Tolerances state what the coarse resolution achieves; the
+//! doc comment of each test says what the finer run gives.
+
+use slamtool::analytic::{von_karman, wagner, zhao_faltinsen1993};
+use slamtool::loads::peaks::summarise;
+use slamtool::sph::{
+    self, MotionSpec, Overrides, RunOptions, SensorSpec, Setup, Simulation, body::Section,
+    eos::EosKind,
+};
+
+// ------------------------------------------------------------------------------------------------
+// Reference data (copied with provenance).
+
+/// data/reference/zhao1996_wedge30_velocity.csv: Zhao, Faltinsen & Aarsnes (1996) 30 deg wedge drop,
+/// measured downward velocity (m/s), eye-digitised, +-0.05 m/s. Columns t_ms, v_down_m_s.
+const ZHAO_VELOCITY: [[f64; 2]; 11] = [
+    [0.0, 6.15],
+    [2.5, 6.14],
+    [5.0, 6.08],
+    [7.5, 5.97],
+    [10.0, 5.80],
+    [12.5, 5.58],
+    [15.0, 5.35],
+    [17.5, 5.15],
+    [20.0, 5.02],
+    [22.5, 4.94],
+    [25.0, 4.90],
+];
+
+/// data/reference/zhao1996_wedge30_drop.csv: vertical force on the 0.20 m measuring section (N): t_ms,
+/// f_measured_n, f_bem_n (fully nonlinear 2D BEM of the paper). Eye-digitised, +-250 N.
+const ZHAO_FORCE: [[f64; 3]; 12] = [
+    [0.0, 0.0, 0.0],
+    [2.5, 1400.0, 1400.0],
+    [5.0, 2800.0, 2850.0],
+    [7.5, 3900.0, 4200.0],
+    [10.0, 4500.0, 5500.0],
+    [12.5, 4900.0, 6200.0],
+    [14.5, 5150.0, 6550.0],
+    [15.5, 5100.0, 6650.0],
+    [17.5, 3700.0, 5000.0],
+    [20.0, 2600.0, 3500.0],
+    [22.5, 2300.0, 3100.0],
+    [25.0, 1900.0, 2800.0],
+];
+
+/// Length of the Zhao et al. measuring section (m), data/reference/zhao1996_wedge30_drop.csv.
+const ZHAO_SECTION_M: f64 = 0.20;
+
+fn zhao_wedge() -> Section {
+    // data/reference/zhao1996_wedge30_drop.csv: breadth 0.5 m, knuckles at 0.25 m, height 0.29 m.
+    Section::wedge(30f64.to_radians(), 0.25, 0.29).unwrap()
+}
+
+fn quiet() -> RunOptions {
+    RunOptions::default()
+}
+
+// ------------------------------------------------------------------------------------------------
+// Hydrostatic tank.
+
+fn still_tank(dp: f64) -> Setup {
+    Setup {
+        name: "hydrostatic".into(),
+        section_points: None,
+        motion: None,
+        rho0: 1000.0,
+        g: 9.81,
+        dp,
+        h_over_dp: 1.5,
+        c0: 20.0, // > 10 sqrt(g D) = 14 m/s: density varies by 0.5 % at the bottom
+        eos: EosKind::Linear,
+        delta: 0.1,
+        alpha: 0.02,
+        cfl: 0.2,
+        tank_half_width: 0.15,
+        tank_depth: 0.2,
+        tank_wall_height: 0.05,
+        mirror: true,
+        t_end: 3.0,
+        sensors: Vec::new(),
+        snapshot_interval: None,
+        filter_cutoff_hz: None,
+        notes: Vec::new(),
+    }
+}
+
+/// Time-averaged p / (rho g d) at four wall points over [t0, t0 + 1 s] (about one period of the first
+/// sloshing mode, which the still tank keeps at a small amplitude).
+fn wall_pressure_averages(sim: &mut Simulation, t0: f64) -> Vec<f64> {
+    let (rho, g, d, w) = (
+        1000.0,
+        9.81,
+        sim.setup.tank_depth,
+        sim.setup.tank_half_width,
+    );
+    let probes = [
+        (0.0, -d, d),
+        (0.5 * w, -d, d),
+        (w, -0.5 * d, 0.5 * d),
+        (w, -0.75 * d, 0.75 * d),
+    ];
+    let mut sum = vec![0.0; probes.len()];
+    let n = 50;
+    for k in 1..=n {
+        sim.run_until(t0 + k as f64 / n as f64, 0, &mut |_| {})
+            .unwrap();
+        for (s, &(y, z, depth)) in sum.iter_mut().zip(&probes) {
+            *s += sim.fixed_wall_pressure(y, z) / (rho * g * depth) / n as f64;
+        }
+    }
+    sum
+}
+
+fn check_hydrostatic(dp: f64, tol: f64) {
+    let mut sim = Simulation::new(still_tank(dp)).unwrap();
+    sim.run_until(1.0, 0, &mut |_| {}).unwrap();
+    let a = wall_pressure_averages(&mut sim, 1.0);
+    let b = wall_pressure_averages(&mut sim, 2.0);
+    eprintln!("dp {dp}: p/(rho g d) averaged over 1-2 s {a:?}, over 2-3 s {b:?}");
+    for (k, (x, y)) in a.iter().zip(&b).enumerate() {
+        assert!((y - 1.0).abs() < tol, "probe {k}: p / (rho g d) = {y}");
+        assert!((y - x).abs() < 0.005, "probe {k} drifts: {x} -> {y}");
+    }
+}
+
+/// Still tank (c0 = 20 m/s): wall pressure (Adami et al. 2012 extrapolation, the same the body sensors
+/// use) at the bottom and on the side wall against rho g d, time-averaged over 1 s windows after 1 s of
+/// settling (a small undamped sloshing oscillation remains), at bottom centre, bottom quarter, side wall
+/// at half and three quarters depth. Measured over 2-3 s:
+/// * 20 particle rows (this test): 1.0091, 1.0064, 1.0055, 1.0081;
+/// * 40 particle rows (`hydrostatic_fine`): 1.0100, 1.0054, 1.0045, 1.0062.
+///
+/// Both assert the 1 % and no drift (change below 0.5 % between the two windows). What is left
+/// of the bias scales with the compressibility rho g D / (rho0 c0^2) (0.5 % here): +0.4 % at c0 = 40 m/s.
+#[test]
+fn hydrostatic_coarse() {
+    check_hydrostatic(0.01, 0.01);
+}
+
+#[test]
+#[ignore = "fine resolution, about a minute and a half"]
+fn hydrostatic_fine() {
+    check_hydrostatic(0.005, 0.01);
+}
+
+// ------------------------------------------------------------------------------------------------
+// Determinism across thread counts.
+
+/// The same short wedge run on a 1-thread and a 2-thread rayon pool gives bit-identical histories and
+/// particle states.
+#[test]
+fn identical_on_one_and_two_threads() {
+    let run = |threads: usize| {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        pool.install(|| {
+            let setup = sph::case::resolve(
+                "det",
+                &zhao_wedge(),
+                &MotionSpec::Constant { speed_m_s: 5.0 },
+                vec![SensorSpec {
+                    name: "p".into(),
+                    s_m: 0.02,
+                    width_m: 0.01,
+                }],
+                &Overrides {
+                    particles_per_half_beam: Some(20.0),
+                    ..Default::default()
+                },
+            )
+            .unwrap();
+            let mut sim = Simulation::new(setup).unwrap();
+            for _ in 0..60 {
+                sim.step().unwrap();
+            }
+            (sim.history.clone(), sim.pt.clone())
+        })
+    };
+    let (h1, p1) = run(1);
+    let (h2, p2) = run(2);
+    assert!(
+        h1.fz.iter().any(|&f| f != 0.0),
+        "the body must have met the water"
+    );
+    for (a, b) in [
+        (&h1.fz, &h2.fz),
+        (&h1.t, &h2.t),
+        (&h1.sensors[0], &h2.sensors[0]),
+    ] {
+        assert_eq!(a.len(), b.len());
+        for (x, y) in a.iter().zip(b) {
+            assert_eq!(x.to_bits(), y.to_bits());
+        }
+    }
+    for (a, b) in [
+        (&p1.y, &p2.y),
+        (&p1.z, &p2.z),
+        (&p1.vz, &p2.vz),
+        (&p1.rho, &p2.rho),
+        (&p1.p, &p2.p),
+    ] {
+        assert!(a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits()));
+    }
+}
+
+// ------------------------------------------------------------------------------------------------
+// Constant-speed wedges.
+
+struct WedgeRun {
+    beta: f64,
+    speed: f64,
+    result: sph::RunResult,
+}
+
+/// A wedge (knuckle at 0.25 m, vertical sides) at constant speed, with `sensors` sensors of 10 mm spread
+/// along the side between 15 % and 85 % of its length; runs to `t_frac` of the Wagner chine-wetting time.
+fn wedge_run(deadrise_deg: f64, speed: f64, n_half: f64, sensors: usize, t_frac: f64) -> WedgeRun {
+    let beta = deadrise_deg.to_radians();
+    let b = 0.25;
+    let section = Section::wedge(beta, b, 1.5 * b * beta.tan()).unwrap();
+    let side = b / beta.cos();
+    let specs = (0..sensors)
+        .map(|k| SensorSpec {
+            name: format!("p{k}"),
+            s_m: side * (0.15 + 0.7 * k as f64 / (sensors.max(2) - 1) as f64),
+            width_m: 0.01,
+        })
+        .collect();
+    let t_wet = 2.0 / std::f64::consts::PI * b * beta.tan() / speed;
+    let setup = sph::case::resolve(
+        "wedge",
+        &section,
+        &MotionSpec::Constant { speed_m_s: speed },
+        specs,
+        &Overrides {
+            particles_per_half_beam: Some(n_half),
+            t_end: Some(t_frac * t_wet),
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    WedgeRun {
+        beta,
+        speed,
+        result: sph::run(setup, &quiet()).unwrap(),
+    }
+}
+
+/// Mean of `x` over the samples with t in [t0, t1].
+fn window_mean(t: &[f64], x: &[f64], t0: f64, t1: f64) -> f64 {
+    let v: Vec<f64> = t
+        .iter()
+        .zip(x)
+        .filter(|(t, _)| **t >= t0 && **t <= t1)
+        .map(|(_, x)| *x)
+        .collect();
+    v.iter().sum::<f64>() / v.len() as f64
+}
+
+/// Sensor peak pressure coefficients 2 p / (rho V^2), from peaks after a zero-phase low-pass at
+/// `cutoff_hz`, and the times of those peaks.
+fn sensor_cp(run: &WedgeRun, cutoff_hz: f64) -> Vec<(f64, f64)> {
+    let h = &run.result.history;
+    h.sensors
+        .iter()
+        .map(|col| {
+            let s = summarise(&h.t, col, Some(cutoff_hz))
+                .unwrap()
+                .filtered
+                .unwrap();
+            (2.0 * s.value / (1000.0 * run.speed * run.speed), s.time)
+        })
+        .collect()
+}
+
+/// 30 deg wedge at 5 m/s: the section force lies between the von Karman and Wagner forces (the
+/// classical lower and upper bounds), averaged over 30-60 % of the chine-wetting time. Coarse (25
+/// particles over the half-beam, this test): SPH/Wagner = 0.90 measured.
+#[test]
+fn wedge30_constant_speed_force_bounds() {
+    let run = wedge_run(30.0, 5.0, 25.0, 0, 0.65);
+    let h = &run.result.history;
+    let t_wet = 2.0 / std::f64::consts::PI * 0.25 * run.beta.tan() / run.speed;
+    let (t0, t1) = (0.3 * t_wet, 0.6 * t_wet);
+    let f_sph = window_mean(&h.t, &h.fz, t0, t1);
+    let tm = 0.45 * t_wet;
+    let f_w = wagner::force(run.beta, 1000.0, run.speed, tm);
+    let f_vk = von_karman::force(run.beta, 1000.0, run.speed, tm);
+    eprintln!(
+        "30 deg force over {t0:.4}-{t1:.4} s: SPH {f_sph:.0} N/m, von Karman {f_vk:.0}, Wagner {f_w:.0} (SPH/Wagner {:.3})",
+        f_sph / f_w
+    );
+    assert!(
+        f_sph > f_vk && f_sph < f_w,
+        "SPH force {f_sph} outside [{f_vk}, {f_w}]"
+    );
+}
+
+/// 30 deg wedge at 5 m/s, sensor peak pressure coefficients (2 kHz zero-phase low-pass) against Wagner's
+/// Cp_max = (pi^2/4) cot^2(beta) = 7.40 (the form without the "1 +", see
+/// data/reference/water_entry_theory.md). At 25 particles over the half-beam the sensor peaks are
+/// dominated by the row-by-row impact noise of the particle lattice (peaks of 0.7-3.3 x Wagner measured),
+/// so this check is run at 80 particles only; its tolerance (+-30 %) has NOT been verified by a run yet.
+#[test]
+#[ignore = "80 particles over the half-beam: many minutes"]
+fn wedge30_peak_pressure_fine() {
+    let run = wedge_run(30.0, 5.0, 80.0, 4, 0.8);
+    let cp_w = wagner::peak_pressure_coefficient(run.beta);
+    let cps = sensor_cp(&run, 2000.0);
+    eprintln!("30 deg sensor Cp (filtered 2 kHz) {cps:?}, Wagner {cp_w:.3}");
+    for (cp, _) in &cps {
+        assert!((cp / cp_w - 1.0).abs() < 0.3, "Cp {cp} vs Wagner {cp_w}");
+    }
+}
+
+/// 20 deg wedge at 5 m/s against the Zhao & Faltinsen (1993) similarity solution, Cp_max = 17.77 at
+/// z/(V t) = 0.5087 (data/reference/water_entry_theory.md, from Iafrati 2013 Table 1): a sensor at arc
+/// length s from the keel sees the peak when the peak's height above the keel, (1 + 0.5087) V t, reaches
+/// s sin(beta). At 25 particles over the half-beam this gave Cp 23.3 and 32.2 (1.3-1.8 x) with peak times
+/// 0.89 and 0.80 of the similarity times, so it runs at 80 particles only; the tolerances (+-30 % on
+/// Cp_max, +-15 % on the time) have NOT been verified by a run yet.
+#[test]
+#[ignore = "80 particles over the half-beam: many minutes"]
+fn wedge20_similarity_peak_fine() {
+    let run = wedge_run(zhao_faltinsen1993::DEADRISE_DEG, 5.0, 80.0, 3, 0.8);
+    let sens = &run.result.summary.setup.sensors;
+    let cps = sensor_cp(&run, 2000.0);
+    for ((cp, t), s) in cps.iter().zip(sens) {
+        let t_sim = s.s_m * run.beta.sin() / ((1.0 + zhao_faltinsen1993::Z_OVER_VT) * run.speed);
+        eprintln!(
+            "20 deg sensor at s = {:.3} m: Cp {cp:.2} at {:.3} ms; similarity {} at {:.3} ms",
+            s.s_m,
+            t * 1e3,
+            zhao_faltinsen1993::CP_MAX,
+            t_sim * 1e3
+        );
+        assert!(
+            (cp / zhao_faltinsen1993::CP_MAX - 1.0).abs() < 0.3,
+            "Cp {cp}"
+        );
+        assert!(
+            (t / t_sim - 1.0).abs() < 0.15,
+            "time of peak {t} vs {t_sim}"
+        );
+    }
+}
+
+// ------------------------------------------------------------------------------------------------
+// Zhao et al. (1996) 30 deg wedge drop.
+
+fn zhao_prescribed(n_half: f64) -> sph::RunResult {
+    let table = ZHAO_VELOCITY.iter().map(|r| [r[0] * 1e-3, r[1]]).collect();
+    let setup = sph::case::resolve(
+        "zhao1996_prescribed",
+        &zhao_wedge(),
+        &MotionSpec::Prescribed { table },
+        Vec::new(),
+        &Overrides {
+            particles_per_half_beam: Some(n_half),
+            t_end: Some(0.025),
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    sph::run(setup, &quiet()).unwrap()
+}
+
+/// Peak of the section force on the 0.2 m measuring section after a 300 Hz zero-phase low-pass (inside
+/// the 100-500 Hz range the experiments used; it removes the row-by-row impact noise of the particle
+/// lattice at V/dp = 0.6-1 kHz), and its time (ms).
+fn zhao_peak(r: &sph::RunResult) -> (f64, f64) {
+    let h = &r.history;
+    let f: Vec<f64> = h.fz.iter().map(|f| f * ZHAO_SECTION_M).collect();
+    let s = summarise(&h.t, &f, Some(300.0)).unwrap().filtered.unwrap();
+    (s.value, s.time * 1e3)
+}
+
+/// Zhao et al. (1996) 30 deg wedge with the measured velocity imposed: force on the 0.2 m section against
+/// the paper's fully nonlinear 2D BEM (peak 6650 N near 15.5 ms), which solves the same 2D problem. The
+/// measured peak (5150 N at 14.5 ms, about 23 % lower: 3D end effects of the rig) is printed for
+/// context only. Measured with the 300 Hz filter (peak, time, error against the BEM peak):
+/// * 15 particles over the half-beam: 10690 N at 7.6 ms (+61 %);
+/// * 25 particles (this test): 9740 N at 12.9 ms (+46 %; the filtered coarse force has two humps of
+///   similar height, at 12.9 and 14.6 ms); tolerance 55 % and 3 ms;
+/// * 40 particles (`zhao1996_prescribed_fine`): 8480 N at 14.65 ms (+28 %); tolerance 30 % and 2 ms;
+/// * 80 particles (`zhao1996_prescribed_80`, 77,000 fluid particles, 14 min on 2 shared cores):
+///   6780 N at 16.0 ms (+1.9 %; measured rig force 5150 N: SPH +32 %); tolerance 10 % (the issue's
+///   target) and 2 ms.
+///
+/// The coarse overshoot comes mostly from the early impact: the body meets the water through the kernel
+/// support (2h) before the contours touch, which shrinks with dp. At 40 particles the filtered peak is
+/// also sensitive to small changes of the wall treatment (7250 N with dummy volumes m/rho_w instead of
+/// dp^2), so read the coarse numbers as +-15 %.
+#[test]
+fn zhao1996_prescribed_velocity_force() {
+    check_zhao(25.0, 0.55, 3.0);
+}
+
+#[test]
+#[ignore = "40 particles over the half-beam, about a minute"]
+fn zhao1996_prescribed_fine() {
+    check_zhao(40.0, 0.30, 2.0);
+}
+
+#[test]
+#[ignore = "80 particles over the half-beam: about 15 minutes"]
+fn zhao1996_prescribed_80() {
+    check_zhao(80.0, 0.10, 2.0);
+}
+
+fn check_zhao(n_half: f64, tol: f64, t_tol_ms: f64) {
+    let r = zhao_prescribed(n_half);
+    let (f, t) = zhao_peak(&r);
+    eprintln!(
+        "Zhao 1996 prescribed, {n_half} particles: SPH peak {f:.0} N at {t:.2} ms (300 Hz low-pass); BEM 6650 N at 15.5 ms; measured 5150 N at 14.5 ms"
+    );
+    for row in ZHAO_FORCE {
+        let fs = window_mean(
+            &r.history.t,
+            &r.history.fz,
+            (row[0] - 0.5) * 1e-3,
+            (row[0] + 0.5) * 1e-3,
+        ) * ZHAO_SECTION_M;
+        eprintln!(
+            "  t {:5.1} ms: SPH {fs:7.0} N  BEM {:6.0} N  measured {:6.0} N",
+            row[0], row[2], row[1]
+        );
+    }
+    assert!((f / 6650.0 - 1.0).abs() < tol, "peak {f} N vs BEM 6650 N");
+    assert!((t - 15.5).abs() < t_tol_ms, "peak time {t} ms vs 15.5 ms");
+}
+
+/// Convergence in particle spacing on the Zhao prescribed-velocity case: the error of the filtered peak
+/// force against the BEM peak falls as dp falls (15, 25, 40 particles over the half-beam: measured 61 %,
+/// 46 %, 28 %; 80 particles, in `zhao1996_prescribed_80`: 1.9 %).
+#[test]
+#[ignore = "three resolutions, several minutes"]
+fn zhao1996_convergence() {
+    let mut errs = Vec::new();
+    for n in [15.0, 25.0, 40.0] {
+        let (f, t) = zhao_peak(&zhao_prescribed(n));
+        let e = (f / 6650.0 - 1.0).abs();
+        eprintln!(
+            "n = {n}: peak {f:.0} N at {t:.2} ms, error vs BEM {:.1} %",
+            e * 100.0
+        );
+        errs.push(e);
+    }
+    assert!(
+        errs[2] < errs[1] && errs[1] < errs[0],
+        "error does not fall: {errs:?}"
+    );
+}
+
+fn free_drop(
+    section: Section,
+    mass: f64,
+    v0: f64,
+    n_half: f64,
+    t_end: f64,
+    tank: Option<(f64, f64)>,
+) -> sph::RunResult {
+    let setup = sph::case::resolve(
+        "drop",
+        &section,
+        &MotionSpec::FreeHeave {
+            mass_per_m_kg: mass,
+            speed_m_s: v0,
+        },
+        Vec::new(),
+        &Overrides {
+            particles_per_half_beam: Some(n_half),
+            t_end: Some(t_end),
+            tank_half_width: tank.map(|t| t.0),
+            tank_depth: tank.map(|t| t.1),
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    sph::run(setup, &quiet()).unwrap()
+}
+
+/// Zhao et al. (1996) free drop, 241 kg per metre from 6.15 m/s: the SPH velocity beside the measured one.
+/// A 2D model is expected to decelerate somewhat faster than the rig (its 2D force is larger, see above).
+/// Asserted: the SPH velocity is at or below the measured one from 10 ms on (faster deceleration), and
+/// within 0.8 m/s of it up to 25 ms. At 25 particles over the half-beam the SPH velocity is 0.45 m/s below
+/// the measurement at 10 ms, 0.58 m/s at 15 ms and 0.75 m/s at 25 ms (the coarse force overshoots the 2D
+/// BEM, see above).
+#[test]
+fn zhao1996_free_drop_velocity() {
+    let r = free_drop(zhao_wedge(), 241.0, 6.15, 25.0, 0.025, None);
+    let h = &r.history;
+    for row in ZHAO_VELOCITY {
+        let v = window_mean(
+            &h.t,
+            &h.v_down,
+            (row[0] - 0.1) * 1e-3,
+            (row[0] + 0.1) * 1e-3,
+        );
+        eprintln!(
+            "  t {:5.1} ms: SPH {v:.3} m/s  measured {:.3} m/s",
+            row[0], row[1]
+        );
+        if row[0] >= 10.0 {
+            assert!(
+                v <= row[1] + 0.05,
+                "t {} ms: SPH {v} faster than measured {}",
+                row[0],
+                row[1]
+            );
+        }
+        assert!(
+            (v - row[1]).abs() < 0.8,
+            "t {} ms: SPH {v} vs measured {}",
+            row[0],
+            row[1]
+        );
+    }
+}
+
+// ------------------------------------------------------------------------------------------------
+// Divergence handling.
+
+/// A run that cannot work (sound speed below the entry speed: the water does not resist, so particles go
+/// through the body) stops with a diagnostic, and the histories up to that point are on disk.
+#[test]
+fn diverging_run_stops_and_keeps_histories() {
+    let beta = 30f64.to_radians();
+    let setup = sph::case::resolve(
+        "diverge",
+        &Section::wedge(beta, 0.25, 0.2).unwrap(),
+        &MotionSpec::Constant { speed_m_s: 5.0 },
+        Vec::new(),
+        &Overrides {
+            dp: Some(0.02),
+            c0: Some(3.0),
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let opts = RunOptions {
+        out_dir: Some(dir.path().to_path_buf()),
+        ..Default::default()
+    };
+    let err = sph::run(setup, &opts).unwrap_err().to_string();
+    assert!(err.contains("went through the body"), "{err}");
+    let csv = std::fs::read_to_string(dir.path().join("history.csv")).unwrap();
+    assert!(csv.lines().count() > 5, "{csv}");
+    let summary = std::fs::read_to_string(dir.path().join("summary.json")).unwrap();
+    assert!(summary.contains("stopped_early"));
+}
