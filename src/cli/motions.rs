@@ -69,17 +69,23 @@ pub struct MotionsArgs {
     output: Option<PathBuf>,
 }
 
-fn bad(what: &str, v: f64) -> Error {
-    Error::Invalid(format!("{what} must be a positive finite number, got {v}"))
+fn bad(what: &str, requirement: &str, v: f64) -> Error {
+    Error::Invalid(format!("{what} must be {requirement}, got {v}"))
 }
 
 pub fn run(a: MotionsArgs) -> Result<()> {
     let hull = Hull::from_file(&a.hull)?;
     let sea = SeaState::from_file(&a.sea)?;
     let loading = hull.loading(a.loading.as_deref())?;
-    for &v in a.froude.iter().chain(&a.lambda_over_l) {
+    // Fn 0 (zero speed) is a valid request; a wavelength must be positive.
+    for &v in &a.froude {
+        if !(v.is_finite() && (0.0..=1.0).contains(&v)) {
+            return Err(bad("--fn values", "between 0 and 1", v));
+        }
+    }
+    for &v in &a.lambda_over_l {
         if !(v.is_finite() && v > 0.0) {
-            return Err(bad("--fn and --lambda-over-l values", v));
+            return Err(bad("--lambda-over-l values", "positive finite numbers", v));
         }
     }
     let model = ShipModel::from_hull(&hull, loading, a.stations)?;
