@@ -144,14 +144,25 @@ fn wedge(a: WedgeArgs) -> slamtool::Result<()> {
         })
         .collect();
     let name = format!("wedge_{}deg_{}ms", a.deadrise_deg, a.speed);
+    constant_speed(&name, &section, a.speed, sensors, &a.common)
+}
+
+/// Resolve and run a constant-speed entry of `section`.
+fn constant_speed(
+    name: &str,
+    section: &Section,
+    speed: f64,
+    sensors: Vec<SensorSpec>,
+    common: &Common,
+) -> slamtool::Result<()> {
     let setup = sph::case::resolve(
-        &name,
-        &section,
-        &MotionSpec::Constant { speed_m_s: a.speed },
+        name,
+        section,
+        &MotionSpec::Constant { speed_m_s: speed },
         sensors,
-        &overrides(&a.common),
+        &overrides(common),
     )?;
-    go(setup, &a.common, &name)
+    go(setup, common, name)
 }
 
 fn hull_section(a: SectionArgs) -> slamtool::Result<()> {
@@ -189,14 +200,7 @@ fn hull_section(a: SectionArgs) -> slamtool::Result<()> {
         .file_stem()
         .map_or("hull".into(), |s| s.to_string_lossy().into_owned());
     let name = format!("{stem}_x{x:.3}m_{}ms", a.speed);
-    let setup = sph::case::resolve(
-        &name,
-        &section,
-        &MotionSpec::Constant { speed_m_s: a.speed },
-        sensors,
-        &overrides(&a.common),
-    )?;
-    go(setup, &a.common, &name)
+    constant_speed(&name, &section, a.speed, sensors, &a.common)
 }
 
 fn case(a: CaseArgs) -> slamtool::Result<()> {
