@@ -212,6 +212,104 @@ pub fn for_each_neighbour<F: FnMut(usize, f64, f64, f64, bool)>(
     flush(&idx[..n], true);
 }
 
+/// Particles per chunk of the neighbour lists (fixed, so the layout does not depend on the thread count).
+pub const LIST_CHUNK: usize = 512;
+
+/// Bit of a list entry set when the neighbour is a mirror image (y -> -y).
+const MIRRORED: u32 = 1 << 31;
+/// Bit of a list entry set when the neighbour is a fluid particle.
+const FLUID: u32 = 1 << 30;
+/// Mask of the particle index in a list entry.
+const INDEX: u32 = FLUID - 1;
+
+/// One neighbour of a list: index j, whether it is a mirror image and whether it is fluid, and the kernel
+/// gradient factor F(|r_ij|) (grad_i W_ij = F r_ij).
+#[derive(Debug, Clone, Copy)]
+pub struct ListEntry {
+    pub j: usize,
+    pub mirrored: bool,
+    pub fluid: bool,
+    pub f: f64,
+}
+
+/// Neighbours of the particles of one chunk, in search order.
+#[derive(Debug, Clone, Default)]
+pub struct ChunkLists {
+    /// Entries of particle k of the chunk are `start[k]..start[k + 1]`.
+    start: Vec<u32>,
+    /// Neighbour index with the `MIRRORED` and `FLUID` bits.
+    tag: Vec<u32>,
+    /// Kernel gradient factor F(r) of the pair.
+    f: Vec<f64>,
+}
+
+impl ChunkLists {
+    /// Start a new build of the lists.
+    pub fn clear(&mut self) {
+        self.start.clear();
+        self.tag.clear();
+        self.f.clear();
+        self.start.push(0);
+    }
+
+    /// Append neighbour j of the current particle.
+    #[inline(always)]
+    pub fn push(&mut self, j: usize, mirrored: bool, fluid: bool, f: f64) {
+        debug_assert!(j < INDEX as usize);
+        let tag = j as u32 | if mirrored { MIRRORED } else { 0 } | if fluid { FLUID } else { 0 };
+        self.tag.push(tag);
+        self.f.push(f);
+    }
+
+    /// Close the list of the current particle.
+    #[inline(always)]
+    pub fn end_particle(&mut self) {
+        self.start.push(self.tag.len() as u32);
+    }
+
+    /// The neighbours of particle k of the chunk, in the order they were found.
+    #[inline(always)]
+    pub fn of(&self, k: usize) -> impl Iterator<Item = ListEntry> + '_ {
+        let r = self.start[k] as usize..self.start[k + 1] as usize;
+        self.tag[r.clone()]
+            .iter()
+            .zip(&self.f[r])
+            .map(|(&t, &f)| ListEntry {
+                j: (t & INDEX) as usize,
+                mirrored: t & MIRRORED != 0,
+                fluid: t & FLUID != 0,
+                f,
+            })
+    }
+
+    /// Number of neighbour entries held.
+    pub fn len(&self) -> usize {
+        self.tag.len()
+    }
+
+    /// Whether the chunk holds no neighbour entries.
+    pub fn is_empty(&self) -> bool {
+        self.tag.is_empty()
+    }
+}
+
+/// Neighbour lists of all particles (chunks of [`LIST_CHUNK`] particles in storage order), built once per
+/// step at the sorted positions with the kernel gradient factors, and valid until the particles move or are
+/// re-sorted. Reusing them in the next continuity pass (taken at the same positions) halves the searches.
+/// The buffers keep their capacity, so after the first steps the time loop does not allocate.
+#[derive(Debug, Clone, Default)]
+pub struct NeighbourLists {
+    pub chunks: Vec<ChunkLists>,
+}
+
+impl NeighbourLists {
+    /// Make room for `n` particles.
+    pub fn resize(&mut self, n: usize) {
+        self.chunks
+            .resize_with(n.div_ceil(LIST_CHUNK), ChunkLists::default);
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
