@@ -252,13 +252,64 @@ impl ChunkLists {
         self.start.push(0);
     }
 
-    /// Append neighbour j of the current particle.
+    /// Append the neighbours of point (yi, zi) within `support2` (squared support radius), mirror images
+    /// included, in the order of [`for_each_neighbour`], leaving out particle `skip` (not its image);
+    /// `fluid(j)` says whether j is fluid and `factor(r)` gives F(r).
+    ///
+    /// The candidates of every cell range are filtered without branches straight into the list (each is
+    /// written and kept by advancing the count); the factors are then computed over the kept ones.
+    #[allow(clippy::too_many_arguments)]
     #[inline(always)]
-    pub fn push(&mut self, j: usize, mirrored: bool, fluid: bool, f: f64) {
-        debug_assert!(j < INDEX as usize);
-        let tag = j as u32 | if mirrored { MIRRORED } else { 0 } | if fluid { FLUID } else { 0 };
-        self.tag.push(tag);
-        self.f.push(f);
+    pub fn push_neighbours(
+        &mut self,
+        grid: &Grid,
+        y: &[f64],
+        z: &[f64],
+        yi: f64,
+        zi: f64,
+        skip: usize,
+        support2: f64,
+        fluid: impl Fn(usize) -> bool,
+        factor: impl Fn(f64) -> f64,
+    ) {
+        let first = self.tag.len();
+        let mut n = first;
+        for r in grid.ranges(yi, zi) {
+            self.tag.resize(n + r.len(), 0);
+            let (ys, zs, out) = (&y[r.clone()], &z[r.clone()], &mut self.tag[..]);
+            for (k, (&yj, &zj)) in ys.iter().zip(zs).enumerate() {
+                let j = r.start + k;
+                let dy = yi - yj;
+                let dz = zi - zj;
+                out[n] = j as u32;
+                n += ((dy * dy + dz * dz < support2) & (j != skip)) as usize;
+            }
+        }
+        for r in grid.mirror_ranges(yi, zi) {
+            self.tag.resize(n + r.len(), 0);
+            let (ys, zs, out) = (&y[r.clone()], &z[r.clone()], &mut self.tag[..]);
+            for (k, (&yj, &zj)) in ys.iter().zip(zs).enumerate() {
+                let j = r.start + k;
+                let dy = yi + yj;
+                let dz = zi - zj;
+                out[n] = j as u32 | MIRRORED;
+                n += (dy * dy + dz * dz < support2) as usize;
+            }
+        }
+        self.tag.truncate(n);
+        for t in &mut self.tag[first..] {
+            let j = (*t & INDEX) as usize;
+            let dy = if *t & MIRRORED != 0 {
+                yi + y[j]
+            } else {
+                yi - y[j]
+            };
+            let dz = zi - z[j];
+            self.f.push(factor((dy * dy + dz * dz).sqrt()));
+            if fluid(j) {
+                *t |= FLUID;
+            }
+        }
     }
 
     /// Close the list of the current particle.
@@ -271,6 +322,22 @@ impl ChunkLists {
     #[inline(always)]
     pub fn of(&self, k: usize) -> impl Iterator<Item = ListEntry> + '_ {
         let r = self.start[k] as usize..self.start[k + 1] as usize;
+        self.tag[r.clone()]
+            .iter()
+            .zip(&self.f[r])
+            .map(|(&t, &f)| ListEntry {
+                j: (t & INDEX) as usize,
+                mirrored: t & MIRRORED != 0,
+                fluid: t & FLUID != 0,
+                f,
+            })
+    }
+
+    /// The neighbours pushed since the last [`ChunkLists::end_particle`] (the particle being built).
+    #[inline(always)]
+    pub fn of_last(&self) -> impl Iterator<Item = ListEntry> + '_ {
+        let k = self.start.len() - 1;
+        let r = self.start[k] as usize..self.tag.len();
         self.tag[r.clone()]
             .iter()
             .zip(&self.f[r])

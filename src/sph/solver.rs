@@ -27,7 +27,7 @@ use crate::sph::diffusion::antuono2010;
 use crate::sph::eos::Eos;
 use crate::sph::integrator;
 use crate::sph::kernel::WendlandC2;
-use crate::sph::neighbours::{Grid, LIST_CHUNK, NeighbourLists, for_each_neighbour};
+use crate::sph::neighbours::{Grid, LIST_CHUNK, NeighbourLists};
 use crate::sph::particles::{Kind, Particles};
 use crate::sph::sensors::{History, SensorSet};
 use crate::sph::tank::Tank;
@@ -567,9 +567,9 @@ fn momentum_rates(
                     }
                     let (yi, zi, vyi, vzi) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i]);
                     let (rho_i, p_i) = (pt.rho[i], pt.p[i]);
-                    let (mut ay, mut az, mut vy_acc, mut vz_acc) = (0.0, 0.0, 0.0, 0.0);
-                    let mut sums = antuono2010::GradientSums::default();
-                    for_each_neighbour(
+                    // Search first (filling the list), then sum over the list: the accumulators stay
+                    // in registers instead of living behind the search closure.
+                    list.push_neighbours(
                         grid,
                         &pt.y,
                         &pt.z,
@@ -577,26 +577,36 @@ fn momentum_rates(
                         zi,
                         i,
                         kernel.support2(),
-                        |j, dy, dz, r2, mirrored| {
-                            count += 1;
-                            let rho_j = pt.rho[j];
-                            let f = kernel.grad_factor(r2.sqrt());
-                            let fluid = pt.kind[j] == Kind::Fluid;
-                            list.push(j, mirrored, fluid, f);
-                            let fw = f * pt.vol[j];
-                            let pf = (p_i + pt.p[j]) * fw;
-                            ay -= pf * dy;
-                            az -= pf * dz;
-                            sums.add(fw, dy, dz, rho_j - rho_i);
-                            if fluid {
-                                let vyj = if mirrored { -pt.vy[j] } else { pt.vy[j] };
-                                let vdotd = (vyi - vyj) * dy + (vzi - pt.vz[j]) * dz;
-                                let pi = vdotd / (r2 + eps2) * fw;
-                                vy_acc += pi * dy;
-                                vz_acc += pi * dz;
-                            }
-                        },
+                        |j| pt.kind[j] == Kind::Fluid,
+                        |r| kernel.grad_factor(r),
                     );
+                    let (mut ay, mut az, mut vy_acc, mut vz_acc) = (0.0, 0.0, 0.0, 0.0);
+                    let mut sums = antuono2010::GradientSums::default();
+                    let mut m = 0u64;
+                    for e in list.of_last() {
+                        m += 1;
+                        let j = e.j;
+                        let dz = zi - pt.z[j];
+                        let (dy, vyj) = if e.mirrored {
+                            (yi + pt.y[j], -pt.vy[j])
+                        } else {
+                            (yi - pt.y[j], pt.vy[j])
+                        };
+                        let rho_j = pt.rho[j];
+                        let fw = e.f * pt.vol[j];
+                        let pf = (p_i + pt.p[j]) * fw;
+                        ay -= pf * dy;
+                        az -= pf * dz;
+                        sums.add(fw, dy, dz, rho_j - rho_i);
+                        if e.fluid {
+                            let r2 = dy * dy + dz * dz;
+                            let vdotd = (vyi - vyj) * dy + (vzi - pt.vz[j]) * dz;
+                            let pi = vdotd / (r2 + eps2) * fw;
+                            vy_acc += pi * dy;
+                            vz_acc += pi * dz;
+                        }
+                    }
+                    count += m;
                     list.end_particle();
                     let inv_rho = 1.0 / rho_i;
                     out[0] = (ay + visc * vy_acc) * inv_rho;
