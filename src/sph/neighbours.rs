@@ -370,6 +370,14 @@ pub struct NeighbourLists {
 }
 
 impl NeighbourLists {
+    /// Bytes held by the lists in use (list starts, neighbour tags and kernel factors).
+    pub fn bytes(&self) -> usize {
+        self.chunks
+            .iter()
+            .map(|c| 4 * c.start.len() + 12 * c.tag.len())
+            .sum()
+    }
+
     /// Make room for `n` particles.
     pub fn resize(&mut self, n: usize) {
         self.chunks
@@ -380,6 +388,58 @@ impl NeighbourLists {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn lists_hold_the_pairs_of_the_search_in_its_order() {
+        let (mut y, mut z) = (Vec::new(), Vec::new());
+        for k in 0..400 {
+            let a = k as f64 * 0.618_033_988_75;
+            y.push((a * 7.3).fract());
+            z.push((a * 3.1).fract() - 0.5);
+        }
+        let support = 0.09;
+        let mut g = Grid::new(0.0, 1.0, -0.5, 0.5, 0.5 * support, true);
+        let order = g.sort(&y, &z).to_vec();
+        let ys: Vec<f64> = order.iter().map(|&k| y[k as usize]).collect();
+        let zs: Vec<f64> = order.iter().map(|&k| z[k as usize]).collect();
+        let mut list = ChunkLists::default();
+        list.clear();
+        for i in 0..ys.len() {
+            let mut want = Vec::new();
+            for_each_neighbour(
+                &g,
+                &ys,
+                &zs,
+                ys[i],
+                zs[i],
+                i,
+                support * support,
+                |j, _, _, r2, m| want.push((j, m, j % 3 == 0, r2.sqrt())),
+            );
+            list.push_neighbours(
+                &g,
+                &ys,
+                &zs,
+                ys[i],
+                zs[i],
+                i,
+                support * support,
+                |j| j % 3 == 0,
+                |r| r,
+            );
+            list.end_particle();
+            let got: Vec<_> = list
+                .of(i)
+                .map(|e| (e.j, e.mirrored, e.fluid, e.f))
+                .collect();
+            assert_eq!(got, want, "particle {i}");
+        }
+        assert!(
+            list.len() > ys.len(),
+            "too few pairs to test: {}",
+            list.len()
+        );
+    }
 
     #[test]
     fn finds_the_same_pairs_as_brute_force() {

@@ -449,9 +449,11 @@ impl Simulation {
         Ok(())
     }
 
-    /// Bytes of particle storage per particle.
+    /// Bytes of storage per particle: the particle arrays, the cell index and sort order (2 x u32), and the
+    /// neighbour lists as they stand (4 bytes of list start per particle, 12 bytes per neighbour entry).
     pub fn bytes_per_particle(&self) -> usize {
-        Particles::bytes_per_particle() + 8 // + cell index and sort order (2 x u32)
+        let n = self.pt.len().max(1);
+        Particles::bytes_per_particle() + 8 + self.lists.bytes().div_ceil(n)
     }
 
     /// Wall pressure at a point of a fixed wall (hydrostatic checks).
