@@ -7,7 +7,8 @@
 //! v^{n+1} = v^{n+1/2} + dt/2 a(r^{n+1}, rho^{n+1})
 //!
 //! (the artificial viscosity in a uses v^{n+1/2}). Two neighbour passes per step: the continuity pass at
-//! r^n and the momentum pass at r^{n+1}.
+//! r^n and the momentum pass at r^{n+1}. Only the momentum pass searches; it keeps its neighbour lists,
+//! which the continuity pass of the next step (at the same positions) reuses.
 //!
 //! Time step (Monaghan 1992; Antuono et al. 2012): dt = min(C h / (c0 + |v|_max), 0.25 sqrt(h / |a|_max))
 //! with the Courant number C about 0.2. The viscous limit h / (alpha c0) of the artificial viscosity is

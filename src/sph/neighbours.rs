@@ -212,9 +212,234 @@ pub fn for_each_neighbour<F: FnMut(usize, f64, f64, f64, bool)>(
     flush(&idx[..n], true);
 }
 
+/// Particles per chunk of the neighbour lists (fixed, so the layout does not depend on the thread count).
+pub const LIST_CHUNK: usize = 512;
+
+/// Bit of a list entry set when the neighbour is a mirror image (y -> -y).
+const MIRRORED: u32 = 1 << 31;
+/// Bit of a list entry set when the neighbour is a fluid particle.
+const FLUID: u32 = 1 << 30;
+/// Mask of the particle index in a list entry.
+const INDEX: u32 = FLUID - 1;
+
+/// One neighbour of a list: index j, whether it is a mirror image and whether it is fluid, and the kernel
+/// gradient factor F(|r_ij|) (grad_i W_ij = F r_ij).
+#[derive(Debug, Clone, Copy)]
+pub struct ListEntry {
+    pub j: usize,
+    pub mirrored: bool,
+    pub fluid: bool,
+    pub f: f64,
+}
+
+/// Neighbours of the particles of one chunk, in search order.
+#[derive(Debug, Clone, Default)]
+pub struct ChunkLists {
+    /// Entries of particle k of the chunk are `start[k]..start[k + 1]`.
+    start: Vec<u32>,
+    /// Neighbour index with the `MIRRORED` and `FLUID` bits.
+    tag: Vec<u32>,
+    /// Kernel gradient factor F(r) of the pair.
+    f: Vec<f64>,
+}
+
+impl ChunkLists {
+    /// Start a new build of the lists.
+    pub fn clear(&mut self) {
+        self.start.clear();
+        self.tag.clear();
+        self.f.clear();
+        self.start.push(0);
+    }
+
+    /// Append the neighbours of point (yi, zi) within `support2` (squared support radius), mirror images
+    /// included, in the order of [`for_each_neighbour`], leaving out particle `skip` (not its image);
+    /// `fluid(j)` says whether j is fluid and `factor(r)` gives F(r).
+    ///
+    /// The candidates of every cell range are filtered without branches straight into the list (each is
+    /// written and kept by advancing the count); the factors are then computed over the kept ones.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    pub fn push_neighbours(
+        &mut self,
+        grid: &Grid,
+        y: &[f64],
+        z: &[f64],
+        yi: f64,
+        zi: f64,
+        skip: usize,
+        support2: f64,
+        fluid: impl Fn(usize) -> bool,
+        factor: impl Fn(f64) -> f64,
+    ) {
+        let first = self.tag.len();
+        let mut n = first;
+        for r in grid.ranges(yi, zi) {
+            self.tag.resize(n + r.len(), 0);
+            let (ys, zs, out) = (&y[r.clone()], &z[r.clone()], &mut self.tag[..]);
+            for (k, (&yj, &zj)) in ys.iter().zip(zs).enumerate() {
+                let j = r.start + k;
+                let dy = yi - yj;
+                let dz = zi - zj;
+                out[n] = j as u32;
+                n += ((dy * dy + dz * dz < support2) & (j != skip)) as usize;
+            }
+        }
+        for r in grid.mirror_ranges(yi, zi) {
+            self.tag.resize(n + r.len(), 0);
+            let (ys, zs, out) = (&y[r.clone()], &z[r.clone()], &mut self.tag[..]);
+            for (k, (&yj, &zj)) in ys.iter().zip(zs).enumerate() {
+                let j = r.start + k;
+                let dy = yi + yj;
+                let dz = zi - zj;
+                out[n] = j as u32 | MIRRORED;
+                n += (dy * dy + dz * dz < support2) as usize;
+            }
+        }
+        self.tag.truncate(n);
+        for t in &mut self.tag[first..] {
+            let j = (*t & INDEX) as usize;
+            let dy = if *t & MIRRORED != 0 {
+                yi + y[j]
+            } else {
+                yi - y[j]
+            };
+            let dz = zi - z[j];
+            self.f.push(factor((dy * dy + dz * dz).sqrt()));
+            if fluid(j) {
+                *t |= FLUID;
+            }
+        }
+    }
+
+    /// Close the list of the current particle.
+    #[inline(always)]
+    pub fn end_particle(&mut self) {
+        self.start.push(self.tag.len() as u32);
+    }
+
+    /// The neighbours of particle k of the chunk, in the order they were found.
+    #[inline(always)]
+    pub fn of(&self, k: usize) -> impl Iterator<Item = ListEntry> + '_ {
+        let r = self.start[k] as usize..self.start[k + 1] as usize;
+        self.tag[r.clone()]
+            .iter()
+            .zip(&self.f[r])
+            .map(|(&t, &f)| ListEntry {
+                j: (t & INDEX) as usize,
+                mirrored: t & MIRRORED != 0,
+                fluid: t & FLUID != 0,
+                f,
+            })
+    }
+
+    /// The neighbours pushed since the last [`ChunkLists::end_particle`] (the particle being built).
+    #[inline(always)]
+    pub fn of_last(&self) -> impl Iterator<Item = ListEntry> + '_ {
+        let k = self.start.len() - 1;
+        let r = self.start[k] as usize..self.tag.len();
+        self.tag[r.clone()]
+            .iter()
+            .zip(&self.f[r])
+            .map(|(&t, &f)| ListEntry {
+                j: (t & INDEX) as usize,
+                mirrored: t & MIRRORED != 0,
+                fluid: t & FLUID != 0,
+                f,
+            })
+    }
+
+    /// Number of neighbour entries held.
+    pub fn len(&self) -> usize {
+        self.tag.len()
+    }
+
+    /// Whether the chunk holds no neighbour entries.
+    pub fn is_empty(&self) -> bool {
+        self.tag.is_empty()
+    }
+}
+
+/// Neighbour lists of all particles (chunks of [`LIST_CHUNK`] particles in storage order), built once per
+/// step at the sorted positions with the kernel gradient factors, and valid until the particles move or are
+/// re-sorted. Reusing them in the next continuity pass (taken at the same positions) halves the searches.
+/// The buffers keep their capacity, so after the first steps the time loop does not allocate.
+#[derive(Debug, Clone, Default)]
+pub struct NeighbourLists {
+    pub chunks: Vec<ChunkLists>,
+}
+
+impl NeighbourLists {
+    /// Bytes held by the lists in use (list starts, neighbour tags and kernel factors).
+    pub fn bytes(&self) -> usize {
+        self.chunks
+            .iter()
+            .map(|c| 4 * c.start.len() + 12 * c.tag.len())
+            .sum()
+    }
+
+    /// Make room for `n` particles.
+    pub fn resize(&mut self, n: usize) {
+        self.chunks
+            .resize_with(n.div_ceil(LIST_CHUNK), ChunkLists::default);
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn lists_hold_the_pairs_of_the_search_in_its_order() {
+        let (mut y, mut z) = (Vec::new(), Vec::new());
+        for k in 0..400 {
+            let a = k as f64 * 0.618_033_988_75;
+            y.push((a * 7.3).fract());
+            z.push((a * 3.1).fract() - 0.5);
+        }
+        let support = 0.09;
+        let mut g = Grid::new(0.0, 1.0, -0.5, 0.5, 0.5 * support, true);
+        let order = g.sort(&y, &z).to_vec();
+        let ys: Vec<f64> = order.iter().map(|&k| y[k as usize]).collect();
+        let zs: Vec<f64> = order.iter().map(|&k| z[k as usize]).collect();
+        let mut list = ChunkLists::default();
+        list.clear();
+        for i in 0..ys.len() {
+            let mut want = Vec::new();
+            for_each_neighbour(
+                &g,
+                &ys,
+                &zs,
+                ys[i],
+                zs[i],
+                i,
+                support * support,
+                |j, _, _, r2, m| want.push((j, m, j % 3 == 0, r2.sqrt())),
+            );
+            list.push_neighbours(
+                &g,
+                &ys,
+                &zs,
+                ys[i],
+                zs[i],
+                i,
+                support * support,
+                |j| j % 3 == 0,
+                |r| r,
+            );
+            list.end_particle();
+            let got: Vec<_> = list
+                .of(i)
+                .map(|e| (e.j, e.mirrored, e.fluid, e.f))
+                .collect();
+            assert_eq!(got, want, "particle {i}");
+        }
+        assert!(
+            list.len() > ys.len(),
+            "too few pairs to test: {}",
+            list.len()
+        );
+    }
 
     #[test]
     fn finds_the_same_pairs_as_brute_force() {

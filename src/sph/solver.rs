@@ -27,7 +27,7 @@ use crate::sph::diffusion::antuono2010;
 use crate::sph::eos::Eos;
 use crate::sph::integrator;
 use crate::sph::kernel::WendlandC2;
-use crate::sph::neighbours::{Grid, for_each_neighbour};
+use crate::sph::neighbours::{Grid, LIST_CHUNK, NeighbourLists};
 use crate::sph::particles::{Kind, Particles};
 use crate::sph::sensors::{History, SensorSet};
 use crate::sph::tank::Tank;
@@ -65,6 +65,10 @@ pub struct Simulation {
     pub dummy_vol: f64,
     pub pt: Particles,
     grid: Grid,
+    /// Neighbour lists of the last momentum pass, reused by the next continuity pass.
+    lists: NeighbourLists,
+    /// Whether `lists` belong to the current positions and storage order.
+    lists_fresh: bool,
     section: Option<Section>,
     motion: Option<Motion>,
     contour: Vec<ContourPoint>,
@@ -145,6 +149,8 @@ impl Simulation {
             eos,
             pt,
             grid,
+            lists: NeighbourLists::default(),
+            lists_fresh: false,
             section,
             motion,
             contour,
@@ -189,6 +195,7 @@ impl Simulation {
         let t0 = std::time::Instant::now();
         let order = self.grid.sort(&self.pt.y, &self.pt.z);
         self.pt.permute(order);
+        self.lists_fresh = false;
         self.counters.add(Stage::Sort, t0.elapsed());
     }
 
@@ -197,14 +204,18 @@ impl Simulation {
         [0.0, -self.body.a_down]
     }
 
-    /// Continuity pass at the current positions: density rates (with the density gradients of the last
-    /// momentum pass, which ran at these same positions and densities).
+    /// Continuity pass at the current positions: density rates (with the density gradients and the
+    /// neighbour lists of the last momentum pass, which ran at these same positions and densities).
     fn evaluate_continuity(&mut self) {
-        let (grid, kernel) = (&self.grid, &self.kernel);
+        assert!(
+            self.lists_fresh,
+            "continuity pass without the neighbour lists of the current positions"
+        );
+        let (lists, kernel) = (&self.lists, &self.kernel);
         let pt = &mut self.pt;
         let s = &self.setup;
         self.counters
-            .time(Stage::Continuity, || continuity_rates(grid, pt, kernel, s));
+            .time(Stage::Continuity, || continuity_rates(lists, pt, kernel, s));
     }
 
     /// Momentum pass at the current positions: wall and body pressures, then accelerations and the
@@ -223,10 +234,12 @@ impl Simulation {
             adami2012::update_pressures(grid, pt, kernel, eos, vol, g, acc)
         });
         let s = &self.setup;
-        let n = self
-            .counters
-            .time(Stage::Momentum, || momentum_rates(grid, pt, kernel, s));
+        let lists = &mut self.lists;
+        let n = self.counters.time(Stage::Momentum, || {
+            momentum_rates(grid, lists, pt, kernel, s)
+        });
         self.counters.interactions += n;
+        self.lists_fresh = true;
     }
 
     /// Wall pressure on the contour and sensors; integrate the section force.
@@ -317,6 +330,7 @@ impl Simulation {
         self.evaluate_continuity();
         let t0 = std::time::Instant::now();
         integrator::drift(&mut self.pt, dt, self.setup.mirror);
+        self.lists_fresh = false;
         if self.motion.is_some() {
             self.body.z_keel -= dt * v_half;
             integrator::move_body(&mut self.pt, 0.0, -dt * v_half, [0.0, -v_half]);
@@ -435,9 +449,11 @@ impl Simulation {
         Ok(())
     }
 
-    /// Bytes of particle storage per particle.
+    /// Bytes of storage per particle: the particle arrays, the cell index and sort order (2 x u32), and the
+    /// neighbour lists as they stand (4 bytes of list start per particle, 12 bytes per neighbour entry).
     pub fn bytes_per_particle(&self) -> usize {
-        Particles::bytes_per_particle() + 8 // + cell index and sort order (2 x u32)
+        let n = self.pt.len().max(1);
+        Particles::bytes_per_particle() + 8 + self.lists.bytes().div_ceil(n)
     }
 
     /// Wall pressure at a point of a fixed wall (hydrostatic checks).
@@ -466,110 +482,139 @@ impl Simulation {
     }
 }
 
-/// Density rate of every fluid particle (continuity with delta-SPH diffusion) into `rate[i][2]`.
-fn continuity_rates(grid: &Grid, pt: &mut Particles, kernel: &WendlandC2, s: &Setup) {
+/// Density rate of every fluid particle (continuity with delta-SPH diffusion) into `rate[i][2]`, over the
+/// neighbour lists of the last momentum pass (which must have run at the current positions and storage
+/// order; only the velocities have changed since).
+fn continuity_rates(lists: &NeighbourLists, pt: &mut Particles, kernel: &WendlandC2, s: &Setup) {
     let delta_term = s.delta * kernel.h() * s.c0;
     let mut out = std::mem::take(&mut pt.rate);
     {
         let pt: &Particles = pt;
-        out.par_iter_mut()
-            .with_min_len(256)
+        out.par_chunks_mut(LIST_CHUNK)
+            .zip(lists.chunks.par_iter())
             .enumerate()
-            .for_each(|(i, out)| {
-                if pt.kind[i] != Kind::Fluid {
-                    out[2] = 0.0;
-                    return;
-                }
-                let (yi, zi, vyi, vzi, rho_i) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i], pt.rho[i]);
-                let gi = pt.grad_rho[i];
-                let (mut div, mut diff) = (0.0, 0.0);
-                for_each_neighbour(
-                    grid,
-                    &pt.y,
-                    &pt.z,
-                    yi,
-                    zi,
-                    i,
-                    kernel.support2(),
-                    |j, dy, dz, r2, mirrored| {
-                        let rho_j = pt.rho[j];
-                        let fw = kernel.grad_factor(r2.sqrt()) * pt.vol[j];
-                        let (vyj, gj) = if mirrored {
-                            (-pt.vy[j], [-pt.grad_rho[j][0], pt.grad_rho[j][1]])
+            .for_each(|(c, (out, list))| {
+                for (k, out) in out.iter_mut().enumerate() {
+                    let i = c * LIST_CHUNK + k;
+                    if pt.kind[i] != Kind::Fluid {
+                        out[2] = 0.0;
+                        continue;
+                    }
+                    let (yi, zi, vyi, vzi, rho_i) =
+                        (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i], pt.rho[i]);
+                    let gi = pt.grad_rho[i];
+                    let (mut div, mut diff) = (0.0, 0.0);
+                    for e in list.of(k) {
+                        let j = e.j;
+                        let fw = e.f * pt.vol[j];
+                        let dz = zi - pt.z[j];
+                        let (dy, vyj, gj) = if e.mirrored {
+                            (
+                                yi + pt.y[j],
+                                -pt.vy[j],
+                                [-pt.grad_rho[j][0], pt.grad_rho[j][1]],
+                            )
                         } else {
-                            (pt.vy[j], pt.grad_rho[j])
+                            (yi - pt.y[j], pt.vy[j], pt.grad_rho[j])
                         };
                         div += fw * ((vyi - vyj) * dy + (vzi - pt.vz[j]) * dz);
                         // Diffusion only between fluid particles: a flux to a dummy particle would
                         // be a mass flux through the wall.
-                        if pt.kind[j] == Kind::Fluid {
+                        if e.fluid {
                             let gsum = [gi[0] + gj[0], gi[1] + gj[1]];
-                            diff += antuono2010::pair_term(fw, dy, dz, rho_i, rho_j, gsum);
+                            diff += antuono2010::pair_term(fw, dy, dz, rho_i, pt.rho[j], gsum);
                         }
-                    },
-                );
-                out[2] = rho_i * div + delta_term * diff;
+                    }
+                    out[2] = rho_i * div + delta_term * diff;
+                }
             });
     }
     pt.rate = out;
 }
 
 /// Acceleration of every fluid particle into `rate[i][0..2]` and its renormalised density gradient into
-/// `grad_rho[i]`; returns the number of pair interactions.
-fn momentum_rates(grid: &Grid, pt: &mut Particles, kernel: &WendlandC2, s: &Setup) -> u64 {
+/// `grad_rho[i]`, with one neighbour search per fluid particle whose pairs and kernel gradient factors are
+/// kept in `lists` for the next continuity pass; returns the number of pair interactions.
+fn momentum_rates(
+    grid: &Grid,
+    lists: &mut NeighbourLists,
+    pt: &mut Particles,
+    kernel: &WendlandC2,
+    s: &Setup,
+) -> u64 {
     let h = kernel.h();
     let visc = s.alpha * h * s.c0 * s.rho0;
     let eps2 = 0.01 * h * h;
     let g = s.g;
+    lists.resize(pt.len());
     let mut out = std::mem::take(&mut pt.rate);
     let mut grad = std::mem::take(&mut pt.grad_rho);
     let n = {
         let pt: &Particles = pt;
-        out.par_iter_mut()
-            .zip(grad.par_iter_mut())
-            .with_min_len(256)
+        out.par_chunks_mut(LIST_CHUNK)
+            .zip(grad.par_chunks_mut(LIST_CHUNK))
+            .zip(lists.chunks.par_iter_mut())
             .enumerate()
-            .map(|(i, (out, grad))| {
-                if pt.kind[i] != Kind::Fluid {
-                    out[0] = 0.0;
-                    out[1] = 0.0;
-                    *grad = [0.0; 2];
-                    return 0u64;
-                }
-                let (yi, zi, vyi, vzi) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i]);
-                let (rho_i, p_i) = (pt.rho[i], pt.p[i]);
-                let (mut ay, mut az, mut vy_acc, mut vz_acc) = (0.0, 0.0, 0.0, 0.0);
-                let mut sums = antuono2010::GradientSums::default();
+            .map(|(c, ((out, grad), list))| {
+                list.clear();
                 let mut count = 0u64;
-                for_each_neighbour(
-                    grid,
-                    &pt.y,
-                    &pt.z,
-                    yi,
-                    zi,
-                    i,
-                    kernel.support2(),
-                    |j, dy, dz, r2, mirrored| {
-                        count += 1;
+                for (k, (out, grad)) in out.iter_mut().zip(grad.iter_mut()).enumerate() {
+                    let i = c * LIST_CHUNK + k;
+                    if pt.kind[i] != Kind::Fluid {
+                        out[0] = 0.0;
+                        out[1] = 0.0;
+                        *grad = [0.0; 2];
+                        list.end_particle();
+                        continue;
+                    }
+                    let (yi, zi, vyi, vzi) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i]);
+                    let (rho_i, p_i) = (pt.rho[i], pt.p[i]);
+                    // Search first (filling the list), then sum over the list: the accumulators stay
+                    // in registers instead of living behind the search closure.
+                    list.push_neighbours(
+                        grid,
+                        &pt.y,
+                        &pt.z,
+                        yi,
+                        zi,
+                        i,
+                        kernel.support2(),
+                        |j| pt.kind[j] == Kind::Fluid,
+                        |r| kernel.grad_factor(r),
+                    );
+                    let (mut ay, mut az, mut vy_acc, mut vz_acc) = (0.0, 0.0, 0.0, 0.0);
+                    let mut sums = antuono2010::GradientSums::default();
+                    let mut m = 0u64;
+                    for e in list.of_last() {
+                        m += 1;
+                        let j = e.j;
+                        let dz = zi - pt.z[j];
+                        let (dy, vyj) = if e.mirrored {
+                            (yi + pt.y[j], -pt.vy[j])
+                        } else {
+                            (yi - pt.y[j], pt.vy[j])
+                        };
                         let rho_j = pt.rho[j];
-                        let fw = kernel.grad_factor(r2.sqrt()) * pt.vol[j];
+                        let fw = e.f * pt.vol[j];
                         let pf = (p_i + pt.p[j]) * fw;
                         ay -= pf * dy;
                         az -= pf * dz;
                         sums.add(fw, dy, dz, rho_j - rho_i);
-                        if pt.kind[j] == Kind::Fluid {
-                            let vyj = if mirrored { -pt.vy[j] } else { pt.vy[j] };
+                        if e.fluid {
+                            let r2 = dy * dy + dz * dz;
                             let vdotd = (vyi - vyj) * dy + (vzi - pt.vz[j]) * dz;
                             let pi = vdotd / (r2 + eps2) * fw;
                             vy_acc += pi * dy;
                             vz_acc += pi * dz;
                         }
-                    },
-                );
-                let inv_rho = 1.0 / rho_i;
-                out[0] = (ay + visc * vy_acc) * inv_rho;
-                out[1] = (az + visc * vz_acc) * inv_rho - g;
-                *grad = sums.gradient();
+                    }
+                    count += m;
+                    list.end_particle();
+                    let inv_rho = 1.0 / rho_i;
+                    out[0] = (ay + visc * vy_acc) * inv_rho;
+                    out[1] = (az + visc * vz_acc) * inv_rho - g;
+                    *grad = sums.gradient();
+                }
                 count
             })
             .sum()
