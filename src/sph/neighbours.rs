@@ -389,6 +389,15 @@ impl NeighbourLists {
 mod tests {
     use super::*;
 
+    /// Points in the unit box (mirror plane at y = 0) sorted by cell on a grid of cells support/2.
+    fn sorted_on_grid(y: &[f64], z: &[f64], support: f64) -> (Grid, Vec<f64>, Vec<f64>) {
+        let mut g = Grid::new(0.0, 1.0, -0.5, 0.5, 0.5 * support, true);
+        let order = g.sort(y, z).to_vec();
+        let ys = order.iter().map(|&k| y[k as usize]).collect();
+        let zs = order.iter().map(|&k| z[k as usize]).collect();
+        (g, ys, zs)
+    }
+
     #[test]
     fn lists_hold_the_pairs_of_the_search_in_its_order() {
         let (mut y, mut z) = (Vec::new(), Vec::new());
@@ -398,10 +407,7 @@ mod tests {
             z.push((a * 3.1).fract() - 0.5);
         }
         let support = 0.09;
-        let mut g = Grid::new(0.0, 1.0, -0.5, 0.5, 0.5 * support, true);
-        let order = g.sort(&y, &z).to_vec();
-        let ys: Vec<f64> = order.iter().map(|&k| y[k as usize]).collect();
-        let zs: Vec<f64> = order.iter().map(|&k| z[k as usize]).collect();
+        let (g, ys, zs) = sorted_on_grid(&y, &z, support);
         let mut list = ChunkLists::default();
         list.clear();
         for i in 0..ys.len() {
@@ -457,10 +463,7 @@ mod tests {
             z.push((s >> 11) as f64 / (1u64 << 53) as f64 - 0.5);
         }
         let support = 0.07;
-        let mut g = Grid::new(0.0, 1.0, -0.5, 0.5, 0.5 * support, true);
-        let order = g.sort(&y, &z).to_vec();
-        let ys: Vec<f64> = order.iter().map(|&k| y[k as usize]).collect();
-        let zs: Vec<f64> = order.iter().map(|&k| z[k as usize]).collect();
+        let (g, ys, zs) = sorted_on_grid(&y, &z, support);
         for i in 0..ys.len() {
             let mut found = Vec::new();
             for_each_neighbour(
