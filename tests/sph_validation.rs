@@ -76,6 +76,7 @@ fn still_tank(dp: f64) -> Setup {
         delta: 0.1,
         alpha: 0.02,
         cfl: 0.2,
+        shifting: false,
         tank_half_width: 0.15,
         tank_depth: 0.2,
         tank_wall_height: 0.05,

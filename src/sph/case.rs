@@ -95,6 +95,9 @@ pub struct Setup {
     pub alpha: f64,
     /// Courant number.
     pub cfl: f64,
+    /// Particle shifting with free-surface treatment ([`crate::sph::shifting`]).
+    #[serde(default)]
+    pub shifting: bool,
     pub tank_half_width: f64,
     pub tank_depth: f64,
     pub tank_wall_height: f64,
@@ -130,6 +133,7 @@ pub struct Overrides {
     pub delta: Option<f64>,
     pub alpha: Option<f64>,
     pub cfl: Option<f64>,
+    pub shifting: Option<bool>,
     pub tank_half_width: Option<f64>,
     pub tank_depth: Option<f64>,
     pub tank_wall_height: Option<f64>,
@@ -138,6 +142,9 @@ pub struct Overrides {
     pub snapshot_interval: Option<f64>,
     pub filter_cutoff_hz: Option<f64>,
 }
+
+/// Whether particle shifting is on unless a case says otherwise.
+pub const DEFAULT_SHIFTING: bool = false;
 
 /// Wagner's peak pressure coefficient (pi^2/4) cot^2(beta), used only to choose the sound speed.
 fn wagner_cp(beta: f64) -> f64 {
@@ -233,6 +240,7 @@ pub fn resolve(
         delta: o.delta.unwrap_or(0.1),
         alpha: o.alpha.unwrap_or(0.02),
         cfl: o.cfl.unwrap_or(0.2),
+        shifting: o.shifting.unwrap_or(DEFAULT_SHIFTING),
         tank_half_width,
         tank_depth,
         tank_wall_height,
@@ -384,6 +392,7 @@ struct NumericsFile {
     delta: Option<Spanned<f64>>,
     alpha: Option<Spanned<f64>>,
     cfl: Option<Spanned<f64>>,
+    shifting: Option<bool>,
     mirror: Option<bool>,
 }
 
@@ -544,6 +553,7 @@ pub fn from_source(src: &SourceText) -> Result<Setup> {
             Some(v) => Some(crate::input::in_range(src, v, 0.01, 0.5, "cfl")?),
             None => None,
         },
+        shifting: f.numerics.shifting,
         tank_half_width: opt(&f.tank.half_width_m, "half_width_m")?,
         tank_depth: opt(&f.tank.depth_m, "depth_m")?,
         tank_wall_height: opt(&f.tank.wall_height_m, "wall_height_m")?,

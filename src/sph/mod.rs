@@ -18,6 +18,7 @@ pub mod neighbours;
 pub mod output;
 pub mod particles;
 pub mod sensors;
+pub mod shifting;
 pub mod solver;
 pub mod tank;
 

@@ -30,6 +30,7 @@ use crate::sph::kernel::WendlandC2;
 use crate::sph::neighbours::{Grid, LIST_CHUNK, NeighbourLists};
 use crate::sph::particles::{Kind, Particles};
 use crate::sph::sensors::{History, SensorSet};
+use crate::sph::shifting::Shifting;
 use crate::sph::tank::Tank;
 
 /// Fraction of full support (Shepard sum of a fully wetted flat wall is about 1/2) below which a wall
@@ -76,6 +77,7 @@ pub struct Simulation {
     /// The closed section contour (body frame), for the check that no fluid went through the body.
     closed_contour: Vec<[f64; 2]>,
     sensors: SensorSet,
+    shifting: Shifting,
     pub body: BodyState,
     pub time: f64,
     pub dt: f64,
@@ -157,6 +159,7 @@ impl Simulation {
             contour_p: vec![0.0; n],
             closed_contour,
             sensors,
+            shifting: Shifting::default(),
             body,
             time: 0.0,
             dt: 0.0,
@@ -329,7 +332,21 @@ impl Simulation {
         self.counters.add(Stage::Integrate, t0.elapsed());
         self.evaluate_continuity();
         let t0 = std::time::Instant::now();
+        if self.setup.shifting {
+            let u_max = v_max.max(self.body.v_down.abs());
+            let s = &self.setup;
+            self.shifting.compute(
+                &self.lists,
+                &self.pt,
+                &self.kernel,
+                s.dp,
+                s.cfl * u_max / s.c0,
+            );
+        }
         integrator::drift(&mut self.pt, dt, self.setup.mirror);
+        if self.setup.shifting {
+            self.shifting.apply(&mut self.pt, self.setup.mirror);
+        }
         self.lists_fresh = false;
         if self.motion.is_some() {
             self.body.z_keel -= dt * v_half;
