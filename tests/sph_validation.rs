@@ -77,6 +77,8 @@ fn still_tank(dp: f64) -> Setup {
         alpha: 0.02,
         cfl: 0.2,
         shifting: false,
+        riemann: false,
+        force: Default::default(),
         tank_half_width: 0.15,
         tank_depth: 0.2,
         tank_wall_height: 0.05,

@@ -56,6 +56,17 @@ impl MotionSpec {
     }
 }
 
+/// How the section force is obtained.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ForceMethod {
+    /// Wall pressure (Adami et al. 2012 extrapolation) integrated around the contour.
+    #[default]
+    Contour,
+    /// Sum of the fluid-body pair forces of the momentum equation ([`crate::sph::body_force`]).
+    PairForces,
+}
+
 /// Resolution level.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
 #[serde(rename_all = "lowercase")]
@@ -98,6 +109,13 @@ pub struct Setup {
     /// Particle shifting with free-surface treatment ([`crate::sph::shifting`]).
     #[serde(default)]
     pub shifting: bool,
+    /// Low-dissipation Riemann pair terms instead of delta-SPH and artificial viscosity
+    /// ([`crate::sph::riemann`]).
+    #[serde(default)]
+    pub riemann: bool,
+    /// How the section force is computed.
+    #[serde(default)]
+    pub force: ForceMethod,
     pub tank_half_width: f64,
     pub tank_depth: f64,
     pub tank_wall_height: f64,
@@ -134,6 +152,8 @@ pub struct Overrides {
     pub alpha: Option<f64>,
     pub cfl: Option<f64>,
     pub shifting: Option<bool>,
+    pub riemann: Option<bool>,
+    pub force: Option<ForceMethod>,
     pub tank_half_width: Option<f64>,
     pub tank_depth: Option<f64>,
     pub tank_wall_height: Option<f64>,
@@ -145,6 +165,9 @@ pub struct Overrides {
 
 /// Whether particle shifting is on unless a case says otherwise.
 pub const DEFAULT_SHIFTING: bool = false;
+
+/// Whether the Riemann pair terms are on unless a case says otherwise.
+pub const DEFAULT_RIEMANN: bool = false;
 
 /// Wagner's peak pressure coefficient (pi^2/4) cot^2(beta), used only to choose the sound speed.
 fn wagner_cp(beta: f64) -> f64 {
@@ -241,6 +264,8 @@ pub fn resolve(
         alpha: o.alpha.unwrap_or(0.02),
         cfl: o.cfl.unwrap_or(0.2),
         shifting: o.shifting.unwrap_or(DEFAULT_SHIFTING),
+        riemann: o.riemann.unwrap_or(DEFAULT_RIEMANN),
+        force: o.force.unwrap_or_default(),
         tank_half_width,
         tank_depth,
         tank_wall_height,
@@ -393,6 +418,8 @@ struct NumericsFile {
     alpha: Option<Spanned<f64>>,
     cfl: Option<Spanned<f64>>,
     shifting: Option<bool>,
+    riemann: Option<bool>,
+    force: Option<ForceMethod>,
     mirror: Option<bool>,
 }
 
@@ -554,6 +581,8 @@ pub fn from_source(src: &SourceText) -> Result<Setup> {
             None => None,
         },
         shifting: f.numerics.shifting,
+        riemann: f.numerics.riemann,
+        force: f.numerics.force,
         tank_half_width: opt(&f.tank.half_width_m, "half_width_m")?,
         tank_depth: opt(&f.tank.depth_m, "depth_m")?,
         tank_wall_height: opt(&f.tank.wall_height_m, "wall_height_m")?,

@@ -7,6 +7,7 @@
 //! [`integrator`]) -> [`sensors`] (histories) -> [`output`] (files) and [`crate::loads`] (peaks).
 
 pub mod body;
+pub mod body_force;
 pub mod boundary;
 pub mod case;
 pub mod counters;
@@ -17,6 +18,7 @@ pub mod kernel;
 pub mod neighbours;
 pub mod output;
 pub mod particles;
+pub mod riemann;
 pub mod sensors;
 pub mod shifting;
 pub mod solver;

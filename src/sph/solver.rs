@@ -20,8 +20,9 @@ use rayon::prelude::*;
 
 use crate::error::{Error, Result};
 use crate::sph::body::{self, ContourPoint, Motion, Section};
+use crate::sph::body_force;
 use crate::sph::boundary::adami2012;
-use crate::sph::case::Setup;
+use crate::sph::case::{ForceMethod, Setup};
 use crate::sph::counters::{Counters, Stage};
 use crate::sph::diffusion::antuono2010;
 use crate::sph::eos::Eos;
@@ -29,6 +30,7 @@ use crate::sph::integrator;
 use crate::sph::kernel::WendlandC2;
 use crate::sph::neighbours::{Grid, LIST_CHUNK, NeighbourLists};
 use crate::sph::particles::{Kind, Particles};
+use crate::sph::riemann;
 use crate::sph::sensors::{History, SensorSet};
 use crate::sph::shifting::Shifting;
 use crate::sph::tank::Tank;
@@ -279,6 +281,11 @@ impl Simulation {
             fz *= 2.0;
             fy = 0.0;
         }
+        if self.setup.force == ForceMethod::PairForces {
+            let s = &self.setup;
+            [fy, fz] =
+                body_force::interaction_force(&self.lists, &self.pt, s.riemann, s.c0, s.mirror);
+        }
         self.body.fy = fy;
         self.body.fz = fz;
         self.body.fy_starboard = fy_s;
@@ -504,6 +511,7 @@ impl Simulation {
 /// order; only the velocities have changed since).
 fn continuity_rates(lists: &NeighbourLists, pt: &mut Particles, kernel: &WendlandC2, s: &Setup) {
     let delta_term = s.delta * kernel.h() * s.c0;
+    let (use_riemann, c0) = (s.riemann, s.c0);
     let mut out = std::mem::take(&mut pt.rate);
     {
         let pt: &Particles = pt;
@@ -517,8 +525,10 @@ fn continuity_rates(lists: &NeighbourLists, pt: &mut Particles, kernel: &Wendlan
                         out[2] = 0.0;
                         continue;
                     }
-                    let (yi, zi, vyi, vzi, rho_i) =
-                        (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i], pt.rho[i]);
+                    let (yi, zi, vyi, vzi, rho_i, p_i) =
+                        (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i], pt.rho[i], pt.p[i]);
+                    // Riemann dissipation is scaled by rho_i, delta-SPH by delta h c0.
+                    let diff_scale = if use_riemann { rho_i } else { delta_term };
                     let gi = pt.grad_rho[i];
                     let (mut div, mut diff) = (0.0, 0.0);
                     for e in list.of(k) {
@@ -537,12 +547,16 @@ fn continuity_rates(lists: &NeighbourLists, pt: &mut Particles, kernel: &Wendlan
                         div += fw * ((vyi - vyj) * dy + (vzi - pt.vz[j]) * dz);
                         // Diffusion only between fluid particles: a flux to a dummy particle would
                         // be a mass flux through the wall.
-                        if e.fluid {
+                        if e.fluid && use_riemann {
+                            let r = (dy * dy + dz * dz).sqrt();
+                            diff +=
+                                riemann::continuity_term(p_i, pt.p[j], rho_i, pt.rho[j], fw, r, c0);
+                        } else if e.fluid {
                             let gsum = [gi[0] + gj[0], gi[1] + gj[1]];
                             diff += antuono2010::pair_term(fw, dy, dz, rho_i, pt.rho[j], gsum);
                         }
                     }
-                    out[2] = rho_i * div + delta_term * diff;
+                    out[2] = rho_i * div + diff_scale * diff;
                 }
             });
     }
@@ -560,7 +574,13 @@ fn momentum_rates(
     s: &Setup,
 ) -> u64 {
     let h = kernel.h();
-    let visc = s.alpha * h * s.c0 * s.rho0;
+    // With the Riemann scheme its dissipation replaces the artificial viscosity.
+    let visc = if s.riemann {
+        0.0
+    } else {
+        s.alpha * h * s.c0 * s.rho0
+    };
+    let (use_riemann, c0) = (s.riemann, s.c0);
     let eps2 = 0.01 * h * h;
     let g = s.g;
     lists.resize(pt.len());
@@ -613,7 +633,14 @@ fn momentum_rates(
                         };
                         let rho_j = pt.rho[j];
                         let fw = e.f * pt.vol[j];
-                        let pf = (p_i + pt.p[j]) * fw;
+                        let psum = if use_riemann {
+                            let r = (dy * dy + dz * dz).sqrt();
+                            let vdotr = (vyi - vyj) * dy + (vzi - pt.vz[j]) * dz;
+                            riemann::pressure_sum(p_i, pt.p[j], rho_i, rho_j, vdotr, r, c0, e.fluid)
+                        } else {
+                            p_i + pt.p[j]
+                        };
+                        let pf = psum * fw;
                         ay -= pf * dy;
                         az -= pf * dz;
                         sums.add(fw, dy, dz, rho_j - rho_i);

@@ -1,0 +1,79 @@
+//! Section force as the sum of the pair forces between the fluid and the body dummies (the reaction of
+//! the pressure terms of the momentum equation, so the force on the body is exactly the momentum the fluid
+//! receives from it; e.g. Bouscasse et al. 2013, Comput. Fluids 80, eq. 14, for the same idea with
+//! ghost particles).
+//!
+//! The momentum equation gives fluid particle i the force m_i a_i = -sum_j P_ij V_i V_j grad_i W_ij from
+//! the dummies j of the body, with P_ij = p_i + p_j (or 2 P* of [`crate::sph::riemann`]). The force on the
+//! body is the opposite:
+//!
+//! F = sum_{i fluid} sum_{j body} P_ij V_i V_j grad_i W_ij = sum_i sum_j P_ij V_i F_ij V_j r_ij.
+//!
+//! With a symmetry plane the sums run over the starboard fluid and all body dummies (real and mirror
+//! images); the port fluid gives the same vertical force, so the vertical force is doubled and the
+//! horizontal one is zero. Sums run over the chunks of the neighbour lists in their fixed order, so the
+//! result does not depend on the number of threads.
+
+use rayon::prelude::*;
+
+use crate::sph::neighbours::{LIST_CHUNK, NeighbourLists};
+use crate::sph::particles::{Kind, Particles};
+use crate::sph::riemann;
+
+/// Force (y, z) on the body (N/m) from the neighbour lists of the last momentum pass (which must belong
+/// to the current positions and storage order). `riemann` and `c0` select the pressure term as in the
+/// momentum pass.
+pub fn interaction_force(
+    lists: &NeighbourLists,
+    pt: &Particles,
+    riemann: bool,
+    c0: f64,
+    mirror: bool,
+) -> [f64; 2] {
+    let parts: Vec<[f64; 2]> = lists
+        .chunks
+        .par_iter()
+        .enumerate()
+        .map(|(c, list)| {
+            let (mut fy, mut fz) = (0.0, 0.0);
+            let n = LIST_CHUNK.min(pt.len().saturating_sub(c * LIST_CHUNK));
+            for k in 0..n {
+                let i = c * LIST_CHUNK + k;
+                if pt.kind[i] != Kind::Fluid {
+                    continue;
+                }
+                let (yi, zi, vyi, vzi) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i]);
+                let (p_i, rho_i, vol_i) = (pt.p[i], pt.rho[i], pt.vol[i]);
+                for e in list.of(k) {
+                    let j = e.j;
+                    if e.fluid || pt.kind[j] != Kind::Body {
+                        continue;
+                    }
+                    let dz = zi - pt.z[j];
+                    let (dy, vyj) = if e.mirrored {
+                        (yi + pt.y[j], -pt.vy[j])
+                    } else {
+                        (yi - pt.y[j], pt.vy[j])
+                    };
+                    let psum = if riemann {
+                        let r = (dy * dy + dz * dz).sqrt();
+                        let vdotr = (vyi - vyj) * dy + (vzi - pt.vz[j]) * dz;
+                        riemann::pressure_sum(p_i, pt.p[j], rho_i, pt.rho[j], vdotr, r, c0, false)
+                    } else {
+                        p_i + pt.p[j]
+                    };
+                    let w = psum * vol_i * e.f * pt.vol[j];
+                    fy += w * dy;
+                    fz += w * dz;
+                }
+            }
+            [fy, fz]
+        })
+        .collect();
+    let (mut fy, mut fz) = (0.0, 0.0);
+    for p in &parts {
+        fy += p[0];
+        fz += p[1];
+    }
+    if mirror { [0.0, 2.0 * fz] } else { [fy, fz] }
+}
