@@ -5,6 +5,10 @@
 //! * peak pressure coefficient Cp_max = 2 p_max / (rho V^2) = (pi^2/4) cot^2(beta); the composite form
 //!   1 + (pi^2/4) cot^2(beta) is given by [`composite_peak_pressure_coefficient`]
 //! * vertical force per unit length F = (pi^3/4) rho V^3 t cot^2(beta)
+//! * free drop of a wedge of mass m per metre (momentum form, von Karman 1929 with Wagner's wetted width;
+//!   e.g. Faltinsen 2005, Hydrodynamics of High-Speed Marine Vehicles, section 8.2): the added mass of the
+//!   flat-plate approximation m_a = (pi/2) rho c^2 with c = (pi/2) z cot(beta) at penetration z, and
+//!   d/dt [(m + m_a(z)) V] = m g, dz/dt = V.
 
 use std::f64::consts::PI;
 
@@ -30,6 +34,37 @@ pub fn force(beta: f64, rho: f64, v: f64, t: f64) -> f64 {
     0.25 * PI.powi(3) * rho * v.powi(3) * t * cot * cot
 }
 
+/// Downward speed of a freely falling wedge (mass `mass_per_m` per metre, entry speed `v0`) at the times
+/// `t` (ascending, from 0), from the momentum form above, integrated with steps of at most `dt_max`
+/// (midpoint rule).
+pub fn free_drop_speed(
+    beta: f64,
+    rho: f64,
+    mass_per_m: f64,
+    v0: f64,
+    g: f64,
+    t: &[f64],
+    dt_max: f64,
+) -> Vec<f64> {
+    let k = 0.5 * PI / beta.tan();
+    let added = |z: f64| 0.5 * PI * rho * (k * z) * (k * z);
+    let speed = |momentum: f64, z: f64| momentum / (mass_per_m + added(z));
+    let (mut time, mut z, mut momentum) = (0.0, 0.0, mass_per_m * v0);
+    let mut out = Vec::with_capacity(t.len());
+    for &tk in t {
+        while time < tk - 1e-15 {
+            let dt = dt_max.min(tk - time);
+            let zm = z + 0.5 * dt * speed(momentum, z);
+            let pm = momentum + 0.5 * dt * mass_per_m * g;
+            z += dt * speed(pm, zm);
+            momentum += dt * mass_per_m * g;
+            time += dt;
+        }
+        out.push(speed(momentum, z));
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -44,5 +79,25 @@ mod tests {
         // Seed check: 37 deg flare struck at 1.4 m/s gives about 4.26 kPa.
         let p = 0.5 * 1000.0 * 1.4f64.powi(2) * peak_pressure_coefficient(37f64.to_radians());
         assert!((p - 4260.0).abs() < 20.0, "{p}");
+    }
+
+    #[test]
+    fn free_drop_conserves_momentum_without_gravity() {
+        // With g = 0: (m + m_a(z)) V = m V0 at every instant, z = integral of V.
+        let (beta, m, v0) = (30f64.to_radians(), 241.0, 6.15);
+        let t: Vec<f64> = (0..=10).map(|k| k as f64 * 2.5e-3).collect();
+        let v = free_drop_speed(beta, 1000.0, m, v0, 0.0, &t, 1e-6);
+        let mut z = 0.0;
+        for k in 1..t.len() {
+            z += 0.5 * (v[k] + v[k - 1]) * (t[k] - t[k - 1]);
+            let c = 0.5 * PI * z / beta.tan();
+            let ma = 0.5 * PI * 1000.0 * c * c;
+            assert!(
+                ((m + ma) * v[k] / (m * v0) - 1.0).abs() < 2e-3,
+                "{k}: {}",
+                v[k]
+            );
+        }
+        assert!(v.windows(2).all(|w| w[1] < w[0]));
     }
 }

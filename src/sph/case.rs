@@ -9,7 +9,8 @@
 //! * sound speed c0 = max(V sqrt(Cp / 0.02), 10 sqrt(g D)): density variation below about 1 % at the
 //!   expected peak pressure coefficient Cp = (pi^2/4) cot^2(beta) (Wagner 1932, beta the smallest local
 //!   deadrise below the chine, not below 10 deg) and at the tank bottom (depth D);
-//! * tank half-width 4 b and depth 3 b, side walls 0.25 D above the water;
+//! * tank half-width max(4 b, c0 t_end / 2) and depth max(3 b, c0 t_end / 2) (no acoustic echo from the
+//!   walls reaches the body during the run), side walls 0.25 D above the water;
 //! * end time: the keel reaches the depth of the chine (the point of largest half-breadth) below the calm
 //!   water surface, capped at 0.9 of the section height.
 
@@ -61,9 +62,9 @@ impl MotionSpec {
 #[serde(rename_all = "snake_case")]
 pub enum ForceMethod {
     /// Wall pressure (Adami et al. 2012 extrapolation) integrated around the contour.
-    #[default]
     Contour,
     /// Sum of the fluid-body pair forces of the momentum equation ([`crate::sph::body_force`]).
+    #[default]
     PairForces,
 }
 
@@ -167,7 +168,7 @@ pub struct Overrides {
 pub const DEFAULT_SHIFTING: bool = false;
 
 /// Whether the Riemann pair terms are on unless a case says otherwise.
-pub const DEFAULT_RIEMANN: bool = false;
+pub const DEFAULT_RIEMANN: bool = true;
 
 /// Wagner's peak pressure coefficient (pi^2/4) cot^2(beta), used only to choose the sound speed.
 fn wagner_cp(beta: f64) -> f64 {
@@ -221,15 +222,26 @@ pub fn resolve(
             t
         }
     };
-    let tank_half_width = o.tank_half_width.unwrap_or(4.0 * b);
-    let tank_depth = o.tank_depth.unwrap_or(3.0 * b);
+    let g = 9.81;
+    // Sound speed for the impact (before the tank is known; the hydrostatic bound below is checked
+    // against the tank chosen from it).
+    let c_impact = o.c0.unwrap_or_else(|| {
+        let beta = section.min_deadrise_below(z_chine).max(10f64.to_radians());
+        built.max_speed(t_end) * (wagner_cp(beta) / 0.02).sqrt()
+    });
+    // A pressure wave sent out by the impact at t = 0 must not come back from the tank walls before
+    // the end of the run (design/physics.md, section 3): walls at least c0 t_end / 2 away.
+    let echo = 0.5 * c_impact * t_end;
+    let tank_half_width = o.tank_half_width.unwrap_or((4.0 * b).max(echo));
+    let tank_depth = o.tank_depth.unwrap_or((3.0 * b).max(echo));
     let tank_wall_height = o.tank_wall_height.unwrap_or(0.25 * tank_depth);
     if o.tank_half_width.is_none() || o.tank_depth.is_none() {
         notes.push(format!(
-            "tank half-width {tank_half_width:.3} m and depth {tank_depth:.3} m (4 b and 3 b unless given)"
+            "tank half-width {tank_half_width:.3} m and depth {tank_depth:.3} m (unless given: at least 4 b \
+             and 3 b, and at least c0 t_end / 2 = {echo:.3} m so that no wall echo of the impact reaches the \
+             body before t_end)"
         ));
     }
-    let g = 9.81;
     let c0 = match o.c0 {
         Some(c) => {
             notes.push(format!("c0 = {c} m/s (given)"));

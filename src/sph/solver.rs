@@ -511,7 +511,7 @@ impl Simulation {
 /// order; only the velocities have changed since).
 fn continuity_rates(lists: &NeighbourLists, pt: &mut Particles, kernel: &WendlandC2, s: &Setup) {
     let delta_term = s.delta * kernel.h() * s.c0;
-    let (use_riemann, c0) = (s.riemann, s.c0);
+    let (use_riemann, c0, rho0_g) = (s.riemann, s.c0, s.rho0 * s.g);
     let mut out = std::mem::take(&mut pt.rate);
     {
         let pt: &Particles = pt;
@@ -549,8 +549,16 @@ fn continuity_rates(lists: &NeighbourLists, pt: &mut Particles, kernel: &Wendlan
                         // be a mass flux through the wall.
                         if e.fluid && use_riemann {
                             let r = (dy * dy + dz * dz).sqrt();
-                            diff +=
-                                riemann::continuity_term(p_i, pt.p[j], rho_i, pt.rho[j], fw, r, c0);
+                            diff += riemann::continuity_term(
+                                p_i,
+                                pt.p[j],
+                                rho_i,
+                                pt.rho[j],
+                                fw,
+                                r,
+                                c0,
+                                -rho0_g * dz,
+                            );
                         } else if e.fluid {
                             let gsum = [gi[0] + gj[0], gi[1] + gj[1]];
                             diff += antuono2010::pair_term(fw, dy, dz, rho_i, pt.rho[j], gsum);
