@@ -489,7 +489,8 @@ fn continuity_rates(lists: &NeighbourLists, pt: &mut Particles, kernel: &Wendlan
     let delta_term = s.delta * kernel.h() * s.c0;
     let mut out = std::mem::take(&mut pt.rate);
     {
-        let pt: &Particles = pt;
+        let grad_rho = &pt.grad_rho[..pt.len()];
+        let pt = pt.view();
         out.par_chunks_mut(LIST_CHUNK)
             .zip(lists.chunks.par_iter())
             .enumerate()
@@ -502,7 +503,7 @@ fn continuity_rates(lists: &NeighbourLists, pt: &mut Particles, kernel: &Wendlan
                     }
                     let (yi, zi, vyi, vzi, rho_i) =
                         (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i], pt.rho[i]);
-                    let gi = pt.grad_rho[i];
+                    let gi = grad_rho[i];
                     let (mut div, mut diff) = (0.0, 0.0);
                     for e in list.of(k) {
                         let j = e.j;
@@ -512,10 +513,10 @@ fn continuity_rates(lists: &NeighbourLists, pt: &mut Particles, kernel: &Wendlan
                             (
                                 yi + pt.y[j],
                                 -pt.vy[j],
-                                [-pt.grad_rho[j][0], pt.grad_rho[j][1]],
+                                [-grad_rho[j][0], grad_rho[j][1]],
                             )
                         } else {
-                            (yi - pt.y[j], pt.vy[j], pt.grad_rho[j])
+                            (yi - pt.y[j], pt.vy[j], grad_rho[j])
                         };
                         div += fw * ((vyi - vyj) * dy + (vzi - pt.vz[j]) * dz);
                         // Diffusion only between fluid particles: a flux to a dummy particle would
@@ -550,7 +551,7 @@ fn momentum_rates(
     let mut out = std::mem::take(&mut pt.rate);
     let mut grad = std::mem::take(&mut pt.grad_rho);
     let n = {
-        let pt: &Particles = pt;
+        let pt = pt.view();
         out.par_chunks_mut(LIST_CHUNK)
             .zip(grad.par_chunks_mut(LIST_CHUNK))
             .zip(lists.chunks.par_iter_mut())
@@ -573,8 +574,8 @@ fn momentum_rates(
                     // in registers instead of living behind the search closure.
                     list.push_neighbours(
                         grid,
-                        &pt.y,
-                        &pt.z,
+                        pt.y,
+                        pt.z,
                         yi,
                         zi,
                         i,
