@@ -510,11 +510,7 @@ fn continuity_rates(lists: &NeighbourLists, pt: &mut Particles, kernel: &Wendlan
                         let fw = e.f * pt.vol[j];
                         let dz = zi - pt.z[j];
                         let (dy, vyj, gj) = if e.mirrored {
-                            (
-                                yi + pt.y[j],
-                                -pt.vy[j],
-                                [-grad_rho[j][0], grad_rho[j][1]],
-                            )
+                            (yi + pt.y[j], -pt.vy[j], [-grad_rho[j][0], grad_rho[j][1]])
                         } else {
                             (yi - pt.y[j], pt.vy[j], grad_rho[j])
                         };
