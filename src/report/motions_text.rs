@@ -40,6 +40,11 @@ pub fn summary(hull: &str, loading: &str, r: &Report) -> String {
     );
     let _ = writeln!(
         o,
+        "natural periods (coupled heave-pitch modes, zero speed): heave {:.3} s, pitch {:.3} s",
+        r.heave_mode_period_s, r.pitch_mode_period_s
+    );
+    let _ = writeln!(
+        o,
         "Ochi slam threshold velocity 0.093 sqrt(g Lpp) = {:.3} m/s",
         r.slam_threshold_velocity_m_s
     );

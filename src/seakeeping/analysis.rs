@@ -114,8 +114,12 @@ pub struct Report {
     pub strip_stations: usize,
     pub lpp_m: f64,
     pub mass_kg: f64,
+    /// Uncoupled natural periods at zero speed (pitch about midship).
     pub heave_natural_period_s: f64,
     pub pitch_natural_period_s: f64,
+    /// Natural periods of the coupled heave-pitch modes at zero speed (what a free model shows).
+    pub heave_mode_period_s: f64,
+    pub pitch_mode_period_s: f64,
     pub slam_threshold_velocity_m_s: f64,
     pub limitation: &'static str,
     /// Conditions outside the range of validity of the method.
@@ -161,6 +165,7 @@ pub fn run(model: &ShipModel, req: &Request) -> Result<Report> {
         }
     }
     let (th, tp) = strip_theory::natural_periods(model, &settings)?;
+    let (th_mode, tp_mode) = strip_theory::natural_mode_periods(model, &settings)?;
     let mut speeds = Vec::new();
     for &u in &req.speeds {
         let omegas: Vec<f64> = req
@@ -275,6 +280,8 @@ pub fn run(model: &ShipModel, req: &Request) -> Result<Report> {
         mass_kg: model.mass,
         heave_natural_period_s: th,
         pitch_natural_period_s: tp,
+        heave_mode_period_s: th_mode,
+        pitch_mode_period_s: tp_mode,
         slam_threshold_velocity_m_s: slamming::threshold_velocity(model.g, model.lpp),
         limitation: PITCH_DAMPING_NOTE,
         warnings,
