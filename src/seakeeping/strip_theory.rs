@@ -88,6 +88,18 @@ pub fn strips(model: &ShipModel, omega_e: f64, settings: &StripSettings) -> Resu
     })
 }
 
+/// Where the sectional solutions at an encounter frequency come from: solved directly
+/// ([`StripSettings`]) or interpolated from a table ([`super::strip_table::StripTable`]).
+pub trait SectionSolutions: Sync {
+    fn strips(&self, model: &ShipModel, omega_e: f64) -> Result<Strips>;
+}
+
+impl SectionSolutions for StripSettings {
+    fn strips(&self, model: &ShipModel, omega_e: f64) -> Result<Strips> {
+        strips(model, omega_e, self)
+    }
+}
+
 fn solve_section(
     sec: &HalfSection,
     omega: f64,
@@ -252,12 +264,13 @@ pub struct Response {
     pub coefficients: Coefficients,
 }
 
-/// Solve the coupled heave-pitch equations at wave frequency `omega0` and speed U.
-pub fn respond(
+/// Solve the coupled heave-pitch equations at wave frequency `omega0` and speed U, with the sectional
+/// solutions from `sections` (a [`StripSettings`] solves them directly).
+pub fn respond<S: SectionSolutions + ?Sized>(
     model: &ShipModel,
     omega0: f64,
     speed: f64,
-    settings: &StripSettings,
+    sections: &S,
 ) -> Result<Response> {
     if !(omega0 > 0.0 && omega0.is_finite()) {
         return Err(Error::Invalid(format!(
@@ -270,7 +283,7 @@ pub fn respond(
         )));
     }
     let we = encounter_frequency(omega0, speed, model.g);
-    let strips = strips(model, we, settings)?;
+    let strips = sections.strips(model, we)?;
     Ok(respond_with(model, &strips, omega0, speed))
 }
 
