@@ -177,3 +177,21 @@ impl SectionSolutions for StripTable {
         self.interpolate(model, omega_e)
     }
 }
+
+/// A table that falls back to direct solves outside its range (for iterations such as the natural
+/// frequencies, whose iterates are not known in advance).
+pub struct TableOrSolve<'a> {
+    pub table: &'a StripTable,
+    pub settings: &'a StripSettings,
+}
+
+impl SectionSolutions for TableOrSolve<'_> {
+    fn strips(&self, model: &ShipModel, omega_e: f64) -> Result<Strips> {
+        let w = self.table.omegas();
+        if omega_e >= w[0] && omega_e <= w[w.len() - 1] {
+            self.table.interpolate(model, omega_e)
+        } else {
+            strip_theory::strips(model, omega_e, self.settings)
+        }
+    }
+}

@@ -320,14 +320,17 @@ pub fn respond_with(model: &ShipModel, strips: &Strips, omega0: f64, speed: f64)
 ///
 /// The uncoupled pitch period depends on the pitch axis chosen (the origin here) and ignores the heave-pitch
 /// coupling of a fore-aft asymmetric ship; [`natural_mode_periods`] gives the periods of the coupled system.
-pub fn natural_periods(model: &ShipModel, settings: &StripSettings) -> Result<(f64, f64)> {
+pub fn natural_periods<S: SectionSolutions + ?Sized>(
+    model: &ShipModel,
+    sections: &S,
+) -> Result<(f64, f64)> {
     let m = mass_matrix(model);
     let c = restoring(model);
     let mut out = [0.0; 2];
     for (j, o) in out.iter_mut().enumerate() {
         let w = natural_frequency(
             |w| {
-                let s = strips(model, w, settings)?;
+                let s = sections.strips(model, w)?;
                 let a = coefficients(model, &s, 0.0).added_mass[j][j];
                 Ok(w * w * (m[j][j] + a) - c[j][j])
             },
@@ -372,7 +375,10 @@ fn natural_frequency(residual: impl Fn(f64) -> Result<f64>, w_dry: f64) -> Resul
 /// symmetric fore and aft (C35 = A35 = 0, G at midship) they equal the uncoupled periods. For any 2x2
 /// symmetric positive-definite pair the Rayleigh quotient puts the lower modal frequency below both
 /// uncoupled ones and the higher above both: coupling separates the modes.
-pub fn natural_mode_periods(model: &ShipModel, settings: &StripSettings) -> Result<(f64, f64)> {
+pub fn natural_mode_periods<S: SectionSolutions + ?Sized>(
+    model: &ShipModel,
+    sections: &S,
+) -> Result<(f64, f64)> {
     let m = mass_matrix(model);
     let c = restoring(model);
     let det_c = c[0][0] * c[1][1] - c[0][1] * c[1][0];
@@ -398,7 +404,7 @@ pub fn natural_mode_periods(model: &ShipModel, settings: &StripSettings) -> Resu
     };
     // Total inertia M + A(w), A symmetrised (A35 = A53 at zero speed up to round-off).
     let inertia = |w: f64| -> Result<[[f64; 2]; 2]> {
-        let s = strips(model, w, settings)?;
+        let s = sections.strips(model, w)?;
         let a = coefficients(model, &s, 0.0).added_mass;
         let a35 = 0.5 * (a[0][1] + a[1][0]);
         Ok([
