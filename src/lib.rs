@@ -29,6 +29,7 @@ pub mod input;
 pub mod loads;
 pub mod numerics;
 pub mod provenance;
+pub mod report;
 pub mod sea;
 pub mod seakeeping;
 pub mod sph;

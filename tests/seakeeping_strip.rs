@@ -1,5 +1,7 @@
 //! Strip-theory bookkeeping: transom terms, restoring, time histories, bad input.
 
+mod common;
+
 use slamtool::seakeeping::rao;
 use slamtool::seakeeping::section::HalfSection;
 use slamtool::seakeeping::strip_theory::{self, StripSettings};
@@ -106,4 +108,16 @@ fn results_do_not_depend_on_the_thread_count() {
     let (a, b) = (run(1), run(3));
     assert_eq!(a.heave, b.heave);
     assert_eq!(a.pitch, b.pitch);
+}
+
+/// A ship symmetric fore and aft with G at midship (Wigley III) has no heave-pitch coupling at zero speed
+/// (C35 = A35 = M35 = 0): its coupled normal-mode periods are the uncoupled periods.
+#[test]
+fn natural_mode_periods_of_a_symmetric_ship_are_the_uncoupled_ones() {
+    let m = common::wigley3(21, 12);
+    let s = StripSettings::default();
+    let (uh, up) = strip_theory::natural_periods(&m, &s).unwrap();
+    let (th, tp) = strip_theory::natural_mode_periods(&m, &s).unwrap();
+    assert!((th / uh - 1.0).abs() < 1e-6, "heave {th} vs {uh}");
+    assert!((tp / up - 1.0).abs() < 1e-6, "pitch {tp} vs {up}");
 }

@@ -1,6 +1,8 @@
-//! Loads from water-entry histories: peaks, their times, impulses, and zero-phase low-pass filtering.
+//! Loads from water-entry histories: peaks, their times, impulses, zero-phase low-pass filtering, and how
+//! converged a peak is in particle spacing.
 
 pub mod butterworth;
+pub mod convergence;
 pub mod peaks;
 
 pub use butterworth::{LowPass, resample_uniform};

@@ -9,7 +9,8 @@ use super::rao::{self, RaoRow};
 use super::relative_motion::{self, KeelEntry};
 use super::section::{HalfSection, SectionMethod};
 use super::slamming::{self, Operability, ResponseSpectrum, SampledSpectrum, SlamStatistics};
-use super::strip_theory::{self, StripSettings};
+use super::strip_table::{StripTable, TableOrSolve};
+use super::strip_theory::{self, SectionSolutions, StripSettings};
 use crate::error::{Error, Result};
 use crate::sea::{IrregularSea, RegularWave};
 
@@ -51,6 +52,11 @@ pub struct Request {
     pub spectrum_samples: usize,
     /// Samples per keel-entry velocity profile.
     pub profile_samples: usize,
+    /// Spacing in ln w of the frequency table the sectional solutions are interpolated from
+    /// ([`super::strip_table`]); `None` solves every encounter frequency directly. At 0.1 the RAOs differ
+    /// from direct solves by about 1e-4 relative (tests/seakeeping_strip_table.rs). The natural-period
+    /// iterations use the table too where their iterates fall inside it (about 1e-5 on the periods).
+    pub frequency_table_spacing: Option<f64>,
     /// Water depth if the sea file gives one (the theory here is for deep water: a warning is issued where
     /// the depth is below half a wavelength of the waves analysed).
     pub water_depth: Option<f64>,
@@ -114,8 +120,12 @@ pub struct Report {
     pub strip_stations: usize,
     pub lpp_m: f64,
     pub mass_kg: f64,
+    /// Uncoupled natural periods at zero speed (pitch about midship).
     pub heave_natural_period_s: f64,
     pub pitch_natural_period_s: f64,
+    /// Natural periods of the coupled heave-pitch modes at zero speed (what a free model shows).
+    pub heave_mode_period_s: f64,
+    pub pitch_mode_period_s: f64,
     pub slam_threshold_velocity_m_s: f64,
     pub limitation: &'static str,
     /// Conditions outside the range of validity of the method.
@@ -160,21 +170,62 @@ pub fn run(model: &ShipModel, req: &Request) -> Result<Report> {
             ));
         }
     }
-    let (th, tp) = strip_theory::natural_periods(model, &settings)?;
+    // The sampled spectra (their frequencies decide the table range).
+    let spectra: Vec<SampledSpectrum> = req
+        .irregular
+        .iter()
+        .map(|sea| {
+            let wp = sea.spectrum.peak_frequency();
+            SampledSpectrum::from_fn(
+                |w| sea.spectrum.density(w),
+                0.4 * wp,
+                3.5 * wp,
+                req.spectrum_samples,
+            )
+        })
+        .collect::<Result<_>>()?;
+    let rao_omegas: Vec<f64> = req
+        .lambda_over_l
+        .iter()
+        .map(|&r| rao::omega_of_lambda_over_l(r, model.lpp, model.g))
+        .collect();
+    let table = match req.frequency_table_spacing {
+        None => None,
+        Some(d) => {
+            let mut needed = Vec::new();
+            for &u in &req.speeds {
+                let wave_omegas = rao_omegas
+                    .iter()
+                    .chain(req.regular.iter().map(|w| &w.omega))
+                    .chain(spectra.iter().flat_map(|sp| sp.omega.iter()));
+                needed
+                    .extend(wave_omegas.map(|&w| strip_theory::encounter_frequency(w, u, model.g)));
+            }
+            Some(StripTable::covering(model, &needed, d, &settings)?)
+        }
+    };
+    let sections: &dyn SectionSolutions = match &table {
+        Some(t) => t,
+        None => &settings,
+    };
+    let periods_from: &dyn SectionSolutions = match &table {
+        Some(table) => &TableOrSolve {
+            table,
+            settings: &settings,
+        },
+        None => &settings,
+    };
+    let (th, tp) = strip_theory::natural_periods(model, periods_from)?;
+    let (th_mode, tp_mode) = strip_theory::natural_mode_periods(model, periods_from)?;
     let mut speeds = Vec::new();
     for &u in &req.speeds {
-        let omegas: Vec<f64> = req
-            .lambda_over_l
-            .iter()
-            .map(|&r| rao::omega_of_lambda_over_l(r, model.lpp, model.g))
-            .collect();
-        let raos = rao::responses(model, u, &omegas, &settings)?
+        let raos = rao::responses(model, u, &rao_omegas, sections)?
             .iter()
             .map(|r| RaoRow::from_response(r, model.lpp))
             .collect();
         let mut regular = Vec::new();
         for w in &req.regular {
-            let r = strip_theory::respond(model, w.omega, u, &settings)?;
+            let r = strip_theory::respond(model, w.omega, u, sections)?;
             let za = w.amplitude();
             let mut st = Vec::new();
             for s in &req.stations {
@@ -206,19 +257,12 @@ pub fn run(model: &ShipModel, req: &Request) -> Result<Report> {
             });
         }
         let mut irregular = Vec::new();
-        for sea in &req.irregular {
-            let wp = sea.spectrum.peak_frequency();
-            let spec = SampledSpectrum::from_fn(
-                |w| sea.spectrum.density(w),
-                0.4 * wp,
-                3.5 * wp,
-                req.spectrum_samples,
-            )?;
+        for (sea, spec) in req.irregular.iter().zip(&spectra) {
             let pts: Vec<(f64, f64)> = req.stations.iter().map(|s| (s.x, s.draft)).collect();
             let xs: Vec<f64> = pts.iter().map(|p| p.0).collect();
-            let spectra =
-                slamming::response_spectra(model, &spec, u, &xs, req.swell_up, &settings)?;
-            let stats = slamming::statistics_from_spectra(model, &spectra, &pts);
+            let responses =
+                slamming::response_spectra(model, spec, u, &xs, req.swell_up, sections)?;
+            let stats = slamming::statistics_from_spectra(model, &responses, &pts);
             let duration_h = sea.duration_h.unwrap_or(1.0);
             let extreme = stats
                 .iter()
@@ -234,7 +278,7 @@ pub fn run(model: &ShipModel, req: &Request) -> Result<Report> {
                 duration_h,
                 stations: stats,
                 extreme_velocity_m_s: extreme,
-                response_spectra: spectra,
+                response_spectra: responses,
             });
         }
         speeds.push(SpeedResult {
@@ -275,6 +319,8 @@ pub fn run(model: &ShipModel, req: &Request) -> Result<Report> {
         mass_kg: model.mass,
         heave_natural_period_s: th,
         pitch_natural_period_s: tp,
+        heave_mode_period_s: th_mode,
+        pitch_mode_period_s: tp_mode,
         slam_threshold_velocity_m_s: slamming::threshold_velocity(model.g, model.lpp),
         limitation: PITCH_DAMPING_NOTE,
         warnings,

@@ -14,6 +14,7 @@ pub mod rao;
 pub mod relative_motion;
 pub mod section;
 pub mod slamming;
+pub mod strip_table;
 pub mod strip_theory;
 
 use crate::error::{Error, Result};

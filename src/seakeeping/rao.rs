@@ -4,7 +4,7 @@
 use nalgebra::Complex;
 
 use super::ShipModel;
-use super::strip_theory::{self, Response, StripSettings};
+use super::strip_theory::{self, Response, SectionSolutions};
 use crate::error::Result;
 
 /// One row of an RAO table (per unit wave amplitude).
@@ -48,15 +48,15 @@ pub fn omega_of_lambda_over_l(lambda_over_l: f64, lpp: f64, g: f64) -> f64 {
 }
 
 /// Responses at a list of wave frequencies (each frequency solved on its own; deterministic).
-pub fn responses(
+pub fn responses<S: SectionSolutions + ?Sized>(
     model: &ShipModel,
     speed: f64,
     omegas0: &[f64],
-    settings: &StripSettings,
+    sections: &S,
 ) -> Result<Vec<Response>> {
     omegas0
         .iter()
-        .map(|&w| strip_theory::respond(model, w, speed, settings))
+        .map(|&w| strip_theory::respond(model, w, speed, sections))
         .collect()
 }
 

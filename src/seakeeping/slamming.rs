@@ -14,7 +14,7 @@
 
 use super::ShipModel;
 use super::relative_motion;
-use super::strip_theory::{self, StripSettings};
+use super::strip_theory::{self, SectionSolutions, StripSettings};
 use crate::error::{Error, Result};
 
 /// Ochi's (1964) threshold velocity 0.093 sqrt(g Lpp) (m/s).
@@ -145,13 +145,13 @@ impl ResponseSpectrum {
 }
 
 /// Response spectra at stations `xs` for one speed in a sampled head-sea spectrum.
-pub fn response_spectra(
+pub fn response_spectra<S: SectionSolutions + ?Sized>(
     model: &ShipModel,
     spectrum: &SampledSpectrum,
     speed: f64,
     xs: &[f64],
     swell_up: f64,
-    settings: &StripSettings,
+    sections: &S,
 ) -> Result<Vec<ResponseSpectrum>> {
     let n = spectrum.omega.len();
     let mut out: Vec<ResponseSpectrum> = xs
@@ -166,7 +166,7 @@ pub fn response_spectra(
         })
         .collect();
     for (j, &w0) in spectrum.omega.iter().enumerate() {
-        let r = strip_theory::respond(model, w0, speed, settings)?;
+        let r = strip_theory::respond(model, w0, speed, sections)?;
         let jac = 1.0 + 2.0 * w0 * speed / model.g;
         for rs in out.iter_mut() {
             let rm = relative_motion::at_station(&r, rs.x, swell_up)?;

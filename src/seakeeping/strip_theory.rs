@@ -88,6 +88,18 @@ pub fn strips(model: &ShipModel, omega_e: f64, settings: &StripSettings) -> Resu
     })
 }
 
+/// Where the sectional solutions at an encounter frequency come from: solved directly
+/// ([`StripSettings`]) or interpolated from a table ([`super::strip_table::StripTable`]).
+pub trait SectionSolutions: Sync {
+    fn strips(&self, model: &ShipModel, omega_e: f64) -> Result<Strips>;
+}
+
+impl SectionSolutions for StripSettings {
+    fn strips(&self, model: &ShipModel, omega_e: f64) -> Result<Strips> {
+        strips(model, omega_e, self)
+    }
+}
+
 fn solve_section(
     sec: &HalfSection,
     omega: f64,
@@ -252,12 +264,13 @@ pub struct Response {
     pub coefficients: Coefficients,
 }
 
-/// Solve the coupled heave-pitch equations at wave frequency `omega0` and speed U.
-pub fn respond(
+/// Solve the coupled heave-pitch equations at wave frequency `omega0` and speed U, with the sectional
+/// solutions from `sections` (a [`StripSettings`] solves them directly).
+pub fn respond<S: SectionSolutions + ?Sized>(
     model: &ShipModel,
     omega0: f64,
     speed: f64,
-    settings: &StripSettings,
+    sections: &S,
 ) -> Result<Response> {
     if !(omega0 > 0.0 && omega0.is_finite()) {
         return Err(Error::Invalid(format!(
@@ -270,7 +283,7 @@ pub fn respond(
         )));
     }
     let we = encounter_frequency(omega0, speed, model.g);
-    let strips = strips(model, we, settings)?;
+    let strips = sections.strips(model, we)?;
     Ok(respond_with(model, &strips, omega0, speed))
 }
 
@@ -301,42 +314,129 @@ pub fn respond_with(model: &ShipModel, strips: &Strips, omega0: f64, speed: f64)
     }
 }
 
-/// Uncoupled natural periods at zero speed, T = 2 pi / w_n with w_n^2 (M + A(w_n)) = C, the added mass taken
-/// at the natural frequency itself (secant iteration on the residual). Returns (heave, pitch) in seconds.
-pub fn natural_periods(model: &ShipModel, settings: &StripSettings) -> Result<(f64, f64)> {
+/// Uncoupled natural periods at zero speed, T = 2 pi / w_n with w_n^2 (M + A(w_n)) = C for heave and for
+/// pitch about the origin (midship) on its own, the added mass taken at the natural frequency itself
+/// (secant iteration on the residual). Returns (heave, pitch) in seconds.
+///
+/// The uncoupled pitch period depends on the pitch axis chosen (the origin here) and ignores the heave-pitch
+/// coupling of a fore-aft asymmetric ship; [`natural_mode_periods`] gives the periods of the coupled system.
+pub fn natural_periods<S: SectionSolutions + ?Sized>(
+    model: &ShipModel,
+    sections: &S,
+) -> Result<(f64, f64)> {
     let m = mass_matrix(model);
     let c = restoring(model);
     let mut out = [0.0; 2];
     for (j, o) in out.iter_mut().enumerate() {
-        let residual = |w: f64| -> Result<f64> {
-            let s = strips(model, w, settings)?;
-            let a = coefficients(model, &s, 0.0).added_mass[j][j];
-            Ok(w * w * (m[j][j] + a) - c[j][j])
-        };
-        let mut w0 = (c[j][j] / (2.0 * m[j][j])).sqrt();
-        let mut w1 = (c[j][j] / m[j][j]).sqrt();
-        let (mut r0, mut r1) = (residual(w0)?, residual(w1)?);
-        let mut converged = false;
-        for _ in 0..40 {
-            if (r1 - r0).abs() < 1e-300 {
-                break;
-            }
-            let w2 = (w1 - r1 * (w1 - w0) / (r1 - r0)).max(0.2 * w1);
-            w0 = w1;
-            r0 = r1;
-            w1 = w2;
-            r1 = residual(w1)?;
-            if (w1 - w0).abs() < 1e-7 * w1 {
-                converged = true;
-                break;
-            }
-        }
-        if !converged || !w1.is_finite() {
-            return Err(Error::Numerical(
-                "natural-frequency iteration did not converge".into(),
-            ));
-        }
-        *o = 2.0 * std::f64::consts::PI / w1;
+        let w = natural_frequency(
+            |w| {
+                let s = sections.strips(model, w)?;
+                let a = coefficients(model, &s, 0.0).added_mass[j][j];
+                Ok(w * w * (m[j][j] + a) - c[j][j])
+            },
+            (c[j][j] / m[j][j]).sqrt(),
+        )?;
+        *o = 2.0 * std::f64::consts::PI / w;
     }
     Ok((out[0], out[1]))
+}
+
+/// Root w > 0 of a natural-frequency residual by the secant method, started at `w_dry` (the frequency
+/// without added mass) and `w_dry / sqrt 2`.
+fn natural_frequency(residual: impl Fn(f64) -> Result<f64>, w_dry: f64) -> Result<f64> {
+    let mut w0 = w_dry / std::f64::consts::SQRT_2;
+    let mut w1 = w_dry;
+    let (mut r0, mut r1) = (residual(w0)?, residual(w1)?);
+    for _ in 0..40 {
+        if (r1 - r0).abs() < 1e-300 {
+            break;
+        }
+        let w2 = (w1 - r1 * (w1 - w0) / (r1 - r0)).max(0.2 * w1);
+        w0 = w1;
+        r0 = r1;
+        w1 = w2;
+        r1 = residual(w1)?;
+        if (w1 - w0).abs() < 1e-7 * w1 && w1.is_finite() {
+            return Ok(w1);
+        }
+    }
+    Err(Error::Numerical(
+        "natural-frequency iteration did not converge".into(),
+    ))
+}
+
+/// Natural periods of the coupled heave-pitch system at zero speed: the undamped normal modes,
+/// det(C - w^2 (M + A(w))) = 0, with the added-mass matrix A (A35 = A53 at zero speed) taken at each mode's
+/// own frequency. Returns (heave mode, pitch mode) in seconds; a mode is called heave where heave carries
+/// the larger share of its kinetic energy, v3^2 (M + A)33 against v5^2 (M + A)55.
+///
+/// These are the free oscillations of a model free to heave and pitch, and they do not depend on the axis
+/// the equations are written about (the uncoupled pitch period of [`natural_periods`] does). For a ship
+/// symmetric fore and aft (C35 = A35 = 0, G at midship) they equal the uncoupled periods. For any 2x2
+/// symmetric positive-definite pair the Rayleigh quotient puts the lower modal frequency below both
+/// uncoupled ones and the higher above both: coupling separates the modes.
+pub fn natural_mode_periods<S: SectionSolutions + ?Sized>(
+    model: &ShipModel,
+    sections: &S,
+) -> Result<(f64, f64)> {
+    let m = mass_matrix(model);
+    let c = restoring(model);
+    let det_c = c[0][0] * c[1][1] - c[0][1] * c[1][0];
+    if !(c[0][0] > 0.0 && det_c > 0.0) {
+        return Err(Error::Invalid(format!(
+            "heave-pitch restoring matrix is not positive definite (C33 {:.6e}, det {:.6e}): \
+             no natural periods",
+            c[0][0], det_c
+        )));
+    }
+    // The two roots lambda = w^2 of det(C - lambda Mt) = 0 for a total inertia Mt, lower first (the larger
+    // root from the formula, the smaller from the product of the roots, for round-off).
+    let roots = |mt: &[[f64; 2]; 2]| -> Result<[f64; 2]> {
+        let qa = mt[0][0] * mt[1][1] - mt[0][1] * mt[1][0];
+        if qa.is_nan() || qa <= 0.0 {
+            return Err(Error::Numerical(
+                "heave-pitch inertia matrix is not positive definite".into(),
+            ));
+        }
+        let qb = -(c[0][0] * mt[1][1] + c[1][1] * mt[0][0] - 2.0 * c[0][1] * mt[0][1]);
+        let hi = (-qb + (qb * qb - 4.0 * qa * det_c).max(0.0).sqrt()) / (2.0 * qa);
+        Ok([det_c / (qa * hi), hi])
+    };
+    // Total inertia M + A(w), A symmetrised (A35 = A53 at zero speed up to round-off).
+    let inertia = |w: f64| -> Result<[[f64; 2]; 2]> {
+        let s = sections.strips(model, w)?;
+        let a = coefficients(model, &s, 0.0).added_mass;
+        let a35 = 0.5 * (a[0][1] + a[1][0]);
+        Ok([
+            [m[0][0] + a[0][0], m[0][1] + a35],
+            [m[1][0] + a35, m[1][1] + a[1][1]],
+        ])
+    };
+    let dry = roots(&m)?;
+    let mut periods = [0.0; 2];
+    let mut heave_share = [0.0; 2];
+    for k in 0..2 {
+        let w = natural_frequency(|w| Ok(w * w - roots(&inertia(w)?)?[k]), dry[k].sqrt())?;
+        let mt = inertia(w)?;
+        let lam = roots(&mt)?;
+        // Mode shape v from (C - lambda Mt) v = 0, using the row that is further from zero relative to the
+        // restoring terms (one row vanishes, up to round-off, when the coupling does).
+        let d = |j: usize, l: usize| c[j][l] - lam[k] * mt[j][l];
+        let scale = (c[0][0] * c[1][1]).sqrt();
+        let n0 = d(0, 0).abs() / c[0][0] + d(0, 1).abs() / scale;
+        let n1 = d(1, 0).abs() / scale + d(1, 1).abs() / c[1][1];
+        let (v3, v5) = if n0 >= n1 {
+            (-d(0, 1), d(0, 0))
+        } else {
+            (d(1, 1), -d(1, 0))
+        };
+        let (e3, e5) = (v3 * v3 * mt[0][0], v5 * v5 * mt[1][1]);
+        heave_share[k] = e3 / (e3 + e5);
+        periods[k] = 2.0 * std::f64::consts::PI / w;
+    }
+    Ok(if heave_share[0] >= heave_share[1] {
+        (periods[0], periods[1])
+    } else {
+        (periods[1], periods[0])
+    })
 }

@@ -22,6 +22,7 @@ pub mod riemann;
 pub mod sensors;
 pub mod shifting;
 pub mod solver;
+pub mod study;
 pub mod tank;
 
 use std::io::Write as _;
@@ -39,6 +40,7 @@ pub use case::{Level, MotionSpec, Overrides, Setup};
 pub use counters::Counters;
 pub use sensors::{History, SensorSpec};
 pub use solver::Simulation;
+pub use study::{ConvergenceReport, StudyPlan, run_with_convergence};
 
 /// What to write during and after a run.
 #[derive(Debug, Clone, Default)]
@@ -89,6 +91,8 @@ pub struct RunSummary {
     pub wagner_peak_force_n_per_m: Option<f64>,
     pub wagner_peak_force_time_s: Option<f64>,
     pub wagner_peak_pressure_pa: Option<f64>,
+    /// The convergence statement of every peak, when the run was part of a study ([`study`]).
+    pub convergence: Option<ConvergenceReport>,
     pub counters: Counters,
     pub setup: Setup,
 }
@@ -257,6 +261,7 @@ fn summarise_run(sim: &Simulation, wall_s: f64, stopped: Option<String>) -> Resu
         wagner_peak_force_n_per_m: wf,
         wagner_peak_force_time_s: wft,
         wagner_peak_pressure_pa: wp,
+        convergence: None,
         counters: sim.counters.clone(),
         setup: s.clone(),
     })

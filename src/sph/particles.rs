@@ -39,6 +39,20 @@ pub struct Particles {
     scratch_kind: Vec<Kind>,
 }
 
+/// The per-particle arrays the pair sums read, all cut to the same length: with one length known to the
+/// compiler, a single bounds check covers the gathers of every array for a neighbour index.
+#[derive(Clone, Copy)]
+pub struct View<'a> {
+    pub y: &'a [f64],
+    pub z: &'a [f64],
+    pub vy: &'a [f64],
+    pub vz: &'a [f64],
+    pub rho: &'a [f64],
+    pub vol: &'a [f64],
+    pub p: &'a [f64],
+    pub kind: &'a [Kind],
+}
+
 impl Particles {
     pub fn len(&self) -> usize {
         self.y.len()
@@ -46,6 +60,22 @@ impl Particles {
 
     pub fn is_empty(&self) -> bool {
         self.y.is_empty()
+    }
+
+    /// The arrays read by the pair sums, cut to a common length.
+    #[inline(always)]
+    pub fn view(&self) -> View<'_> {
+        let n = self.y.len();
+        View {
+            y: &self.y[..n],
+            z: &self.z[..n],
+            vy: &self.vy[..n],
+            vz: &self.vz[..n],
+            rho: &self.rho[..n],
+            vol: &self.vol[..n],
+            p: &self.p[..n],
+            kind: &self.kind[..n],
+        }
     }
 
     /// Add one particle.

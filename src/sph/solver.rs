@@ -514,7 +514,8 @@ fn continuity_rates(lists: &NeighbourLists, pt: &mut Particles, kernel: &Wendlan
     let (use_riemann, c0, rho0_g) = (s.riemann, s.c0, s.rho0 * s.g);
     let mut out = std::mem::take(&mut pt.rate);
     {
-        let pt: &Particles = pt;
+        let grad_rho = &pt.grad_rho[..pt.len()];
+        let pt = pt.view();
         out.par_chunks_mut(LIST_CHUNK)
             .zip(lists.chunks.par_iter())
             .enumerate()
@@ -529,20 +530,16 @@ fn continuity_rates(lists: &NeighbourLists, pt: &mut Particles, kernel: &Wendlan
                         (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i], pt.rho[i], pt.p[i]);
                     // Riemann dissipation is scaled by rho_i, delta-SPH by delta h c0.
                     let diff_scale = if use_riemann { rho_i } else { delta_term };
-                    let gi = pt.grad_rho[i];
+                    let gi = grad_rho[i];
                     let (mut div, mut diff) = (0.0, 0.0);
                     for e in list.of(k) {
                         let j = e.j;
                         let fw = e.f * pt.vol[j];
                         let dz = zi - pt.z[j];
                         let (dy, vyj, gj) = if e.mirrored {
-                            (
-                                yi + pt.y[j],
-                                -pt.vy[j],
-                                [-pt.grad_rho[j][0], pt.grad_rho[j][1]],
-                            )
+                            (yi + pt.y[j], -pt.vy[j], [-grad_rho[j][0], grad_rho[j][1]])
                         } else {
-                            (yi - pt.y[j], pt.vy[j], pt.grad_rho[j])
+                            (yi - pt.y[j], pt.vy[j], grad_rho[j])
                         };
                         div += fw * ((vyi - vyj) * dy + (vzi - pt.vz[j]) * dz);
                         // Diffusion only between fluid particles: a flux to a dummy particle would
@@ -595,7 +592,7 @@ fn momentum_rates(
     let mut out = std::mem::take(&mut pt.rate);
     let mut grad = std::mem::take(&mut pt.grad_rho);
     let n = {
-        let pt: &Particles = pt;
+        let pt = pt.view();
         out.par_chunks_mut(LIST_CHUNK)
             .zip(grad.par_chunks_mut(LIST_CHUNK))
             .zip(lists.chunks.par_iter_mut())
@@ -618,8 +615,8 @@ fn momentum_rates(
                     // in registers instead of living behind the search closure.
                     list.push_neighbours(
                         grid,
-                        &pt.y,
-                        &pt.z,
+                        pt.y,
+                        pt.z,
                         yi,
                         zi,
                         i,
