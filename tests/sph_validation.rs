@@ -8,7 +8,7 @@ use slamtool::analytic::{von_karman, wagner, zhao_faltinsen1993};
 use slamtool::loads::peaks::summarise;
 use slamtool::sph::{
     self, MotionSpec, Overrides, RunOptions, SensorSpec, Setup, Simulation, body::Section,
-    eos::EosKind,
+    case::ForceMethod, eos::EosKind,
 };
 
 // ------------------------------------------------------------------------------------------------
@@ -154,9 +154,16 @@ fn hydrostatic_fine() {
 // Determinism across thread counts.
 
 /// The same short wedge run on a 1-thread and a 2-thread rayon pool gives bit-identical histories and
-/// particle states.
+/// particle states, with the default numerics and with the alternatives (particle shifting, delta-SPH,
+/// contour-integrated force).
 #[test]
 fn identical_on_one_and_two_threads() {
+    for alt in [false, true] {
+        identical_on_one_and_two_threads_with(alt);
+    }
+}
+
+fn identical_on_one_and_two_threads_with(alt: bool) {
     let run = |threads: usize| {
         let pool = rayon::ThreadPoolBuilder::new()
             .num_threads(threads)
@@ -174,6 +181,13 @@ fn identical_on_one_and_two_threads() {
                 }],
                 &Overrides {
                     particles_per_half_beam: Some(20.0),
+                    shifting: Some(alt),
+                    riemann: Some(!alt),
+                    force: Some(if alt {
+                        ForceMethod::Contour
+                    } else {
+                        ForceMethod::PairForces
+                    }),
                     ..Default::default()
                 },
             )
