@@ -35,6 +35,9 @@ pub fn run(a: BenchArgs) -> slamtool::Result<()> {
         Vec::new(),
         &Overrides {
             particles_per_half_beam: Some(n_half),
+            // Fixed tank (the automatic one grows with c0 t_end), so the particle count is as stated.
+            tank_half_width: Some(4.0 * b),
+            tank_depth: Some(3.0 * b),
             ..Default::default()
         },
     )?;
