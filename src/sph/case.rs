@@ -655,6 +655,22 @@ mod tests {
     }
 
     #[test]
+    fn numerics_options_parse_and_bad_values_name_the_place() {
+        let base = "[section]\nwedge = { deadrise_deg = 30.0, half_beam_m = 0.25 }\n\
+                    [motion]\nkind = \"constant\"\nspeed_m_s = 2.0\n";
+        let s = parse(base).unwrap();
+        assert!(s.riemann == DEFAULT_RIEMANN && s.shifting == DEFAULT_SHIFTING);
+        assert_eq!(s.force, ForceMethod::PairForces);
+        let s = parse(&format!(
+            "{base}[numerics]\nriemann = false\nshifting = true\nforce = \"contour\"\n"
+        ))
+        .unwrap();
+        assert!(!s.riemann && s.shifting && s.force == ForceMethod::Contour);
+        let e = parse(&format!("{base}[numerics]\nforce = \"pressure\"\n")).unwrap_err();
+        assert!(e.to_string().starts_with("case.toml:7:9:"), "{e}");
+    }
+
+    #[test]
     fn errors_name_line_and_column() {
         let e = parse(
             "[section]\nwedge = { deadrise_deg = 30.0, half_beam_m = 0.25 }\n\
