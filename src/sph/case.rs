@@ -13,6 +13,13 @@
 //!   walls reaches the body during the run), side walls 0.25 D above the water;
 //! * end time: the keel reaches the depth of the chine (the point of largest half-breadth) below the calm
 //!   water surface, capped at 0.9 of the section height.
+//!
+//! Numerics (`[numerics]` in a case file): `riemann` (default true: the low-dissipation Riemann pair terms
+//! of [`crate::sph::riemann`]; false: delta-SPH with artificial viscosity), `shifting` (default false:
+//! particle shifting of [`crate::sph::shifting`]), `force` (`"pair_forces"`, the default, or `"contour"`),
+//! and `c0_m_s`, `h_over_dp`, `eos`, `delta`, `alpha`, `cfl`, `mirror`. The defaults are the combination
+//! that measured best against the Zhao et al. (1996) 2D solution, the Wagner and similarity peak pressures
+//! and the drop tests (see `tests/sph_validation.rs`).
 
 use std::path::Path;
 

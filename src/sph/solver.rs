@@ -13,6 +13,12 @@
 //! * artificial viscosity kernel: pi_ij = (v_i - v_j) . (r_i - r_j) / (|r_ij|^2 + 0.01 h^2);
 //! * equation of state: [`crate::sph::eos`]; wall pressure: [`crate::sph::boundary::adami2012`].
 //!
+//! The above is the `riemann = false` scheme. By default (`riemann = true`) the pressure sum p_i + p_j
+//! becomes 2 P* and the delta-SPH term the Riemann density dissipation of [`crate::sph::riemann`], without
+//! artificial viscosity. Optional particle shifting after each drift: [`crate::sph::shifting`]. Section
+//! force: the fluid-body pair forces ([`crate::sph::body_force`], default) or the contour integral of the
+//! extrapolated wall pressure; sensors and the contour pressure always use the extrapolated pressure.
+//!
 //! Every sum is a gather over the neighbours of one particle in the fixed cell-sorted order, so the
 //! results are bit-identical on any number of threads.
 
