@@ -258,6 +258,9 @@ fn go(mut setup: sph::Setup, c: &Common, name: &str) -> slamtool::Result<()> {
         ..Default::default()
     };
     let RunResult { summary, .. } = sph::run_with_convergence(setup, &opts, plan)?;
+    for w in &summary.warnings {
+        eprintln!("warning: {w}");
+    }
     if c.json {
         println!(
             "{}",

@@ -91,6 +91,8 @@ pub struct RunSummary {
     pub wagner_peak_force_n_per_m: Option<f64>,
     pub wagner_peak_force_time_s: Option<f64>,
     pub wagner_peak_pressure_pa: Option<f64>,
+    /// Caveats on what the run can represent (e.g. the single-phase limit at low deadrise).
+    pub warnings: Vec<String>,
     /// The convergence statement of every peak, when the run was part of a study ([`study`]).
     pub convergence: Option<ConvergenceReport>,
     pub counters: Counters,
@@ -261,8 +263,35 @@ fn summarise_run(sim: &Simulation, wall_s: f64, stopped: Option<String>) -> Resu
         wagner_peak_force_n_per_m: wf,
         wagner_peak_force_time_s: wft,
         wagner_peak_pressure_pa: wp,
+        warnings: single_phase_warning(sim).into_iter().collect(),
         convergence: None,
         counters: sim.counters.clone(),
         setup: s.clone(),
+    })
+}
+
+/// Deadrise below which single-phase SPH is known to over-predict the peak pressure.
+pub const AIR_CUSHION_DEADRISE_DEG: f64 = 20.0;
+
+/// Single-phase SPH has no air: below about 15-20 deg of deadrise the air trapped and compressed under
+/// the body cushions the impact, and a water-only model over-predicts the peak, by about 2x for Breder's
+/// 10 deg wedge and for Ochi's flat-bottomed section at 0.174 Lpp (Veen 2010, ch. 6). The warning is
+/// raised when the part of the contour that was wetted (Wagner's wetted depth, pi/2 times the keel's
+/// penetration) has a smaller local deadrise than [`AIR_CUSHION_DEADRISE_DEG`].
+fn single_phase_warning(sim: &Simulation) -> Option<String> {
+    let sec = sim.section()?;
+    let depth = (-sim.history.z_keel.iter().copied().fold(0.0, f64::min)).max(0.0);
+    if depth <= 0.0 {
+        return None;
+    }
+    let beta = sec
+        .min_deadrise_below(std::f64::consts::FRAC_PI_2 * depth)
+        .to_degrees();
+    (beta < AIR_CUSHION_DEADRISE_DEG).then(|| {
+        format!(
+            "the wetted contour has a local deadrise of {beta:.1} deg (below {AIR_CUSHION_DEADRISE_DEG} deg): \
+             single-phase SPH has no air cushion and over-predicts peak pressures there (about 2x for \
+             Breder's 10 deg wedge and Ochi's flat section, Veen 2010)"
+        )
     })
 }
