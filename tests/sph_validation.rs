@@ -638,11 +638,31 @@ fn yettou_velocity() -> Vec<[f64; 2]> {
 /// measurement + 0.1 m/s.
 #[test]
 fn yettou2006_free_drop_velocity() {
-    let setup = sph::case::from_file(std::path::Path::new(concat!(
+    let worst = yettou_drop(None, true);
+    assert!(worst < 0.45, "largest velocity difference {worst} m/s");
+}
+
+/// [`yettou2006_free_drop_velocity`] at 80 particles over the half-beam: largest difference 0.25 m/s
+/// measured (the SPH is then above the measurement from 15 ms on, by up to 0.25 m/s at 18 ms).
+#[test]
+#[ignore = "80 particles over the half-beam, about 20 s"]
+fn yettou2006_free_drop_velocity_fine() {
+    let worst = yettou_drop(Some(80.0), false);
+    assert!(worst < 0.3, "largest velocity difference {worst} m/s");
+}
+
+/// Run the Yettou case (at `n_half` particles over the half-beam if given) and return the largest
+/// |SPH - measured| velocity up to 25 ms; with `slower`, also assert SPH <= measured + 0.1 m/s.
+fn yettou_drop(n_half: Option<f64>, slower: bool) -> f64 {
+    let mut setup = sph::case::from_file(std::path::Path::new(concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/data/cases/yettou2006_wedge25_drop.toml"
     )))
     .unwrap();
+    if let Some(n) = n_half {
+        // The case gives the tank and the end time, so only the spacing follows the resolution.
+        setup.dp = 0.6 / n;
+    }
     let r = sph::run(setup, &quiet()).unwrap();
     let h = &r.history;
     let rows: Vec<[f64; 2]> = yettou_velocity()
@@ -664,17 +684,19 @@ fn yettou2006_free_drop_velocity() {
             row[0], row[1]
         );
         worst = worst.max((v - row[1]).abs());
-        assert!(
-            v <= row[1] + 0.1,
-            "t {} ms: SPH {v} vs measured {}",
-            row[0],
-            row[1]
-        );
+        if slower {
+            assert!(
+                v <= row[1] + 0.1,
+                "t {} ms: SPH {v} vs measured {}",
+                row[0],
+                row[1]
+            );
+        }
     }
     eprintln!(
         "Yettou 2006: largest |SPH - measured| up to 25 ms: {worst:.3} m/s (issue target 0.15 m/s)"
     );
-    assert!(worst < 0.45, "largest velocity difference {worst} m/s");
+    worst
 }
 
 // ------------------------------------------------------------------------------------------------
