@@ -299,7 +299,8 @@ fn sensor_cp(run: &WedgeRun, cutoff_hz: f64) -> Vec<(f64, f64)> {
 
 /// 30 deg wedge at 5 m/s: the section force lies between the von Karman and Wagner forces (the
 /// classical lower and upper bounds), averaged over 30-60 % of the chine-wetting time. Coarse (25
-/// particles over the half-beam, this test): SPH/Wagner = 0.90 measured.
+/// particles over the half-beam, this test): SPH/Wagner = 0.70 measured (0.90 with the delta-SPH scheme
+/// and the contour-integrated force, whose coarse-resolution force is too high, see the Zhao tests).
 #[test]
 fn wedge30_constant_speed_force_bounds() {
     let run = wedge_run(30.0, 5.0, 25.0, 0, 0.65);
