@@ -1,6 +1,8 @@
 //! Shared fixtures for the integration tests.
 #![allow(dead_code)]
 
+pub mod sph;
+
 use slamtool::seakeeping::section::HalfSection;
 use slamtool::seakeeping::{ShipModel, StripSection};
 
