@@ -56,9 +56,8 @@ pub fn interaction_force(
                         (yi - pt.y[j], pt.vy[j])
                     };
                     let psum = if riemann {
-                        let r = (dy * dy + dz * dz).sqrt();
                         let vdotr = (vyi - vyj) * dy + (vzi - pt.vz[j]) * dz;
-                        riemann::pressure_sum(p_i, pt.p[j], rho_i, pt.rho[j], vdotr, r, c0, false)
+                        riemann::pressure_sum(p_i, pt.p[j], rho_i, pt.rho[j], vdotr, e.r, c0, false)
                     } else {
                         p_i + pt.p[j]
                     };

@@ -222,13 +222,14 @@ const FLUID: u32 = 1 << 30;
 /// Mask of the particle index in a list entry.
 const INDEX: u32 = FLUID - 1;
 
-/// One neighbour of a list: index j, whether it is a mirror image and whether it is fluid, and the kernel
-/// gradient factor F(|r_ij|) (grad_i W_ij = F r_ij).
+/// One neighbour of a list: index j, whether it is a mirror image and whether it is fluid, the distance
+/// |r_ij| and the kernel gradient factor F(|r_ij|) (grad_i W_ij = F r_ij).
 #[derive(Debug, Clone, Copy)]
 pub struct ListEntry {
     pub j: usize,
     pub mirrored: bool,
     pub fluid: bool,
+    pub r: f64,
     pub f: f64,
 }
 
@@ -239,6 +240,8 @@ pub struct ChunkLists {
     start: Vec<u32>,
     /// Neighbour index with the `MIRRORED` and `FLUID` bits.
     tag: Vec<u32>,
+    /// Distance |r_ij| of the pair (kept: the Riemann terms need it in both passes).
+    r: Vec<f64>,
     /// Kernel gradient factor F(r) of the pair.
     f: Vec<f64>,
 }
@@ -248,6 +251,7 @@ impl ChunkLists {
     pub fn clear(&mut self) {
         self.start.clear();
         self.tag.clear();
+        self.r.clear();
         self.f.clear();
         self.start.push(0);
     }
@@ -305,7 +309,9 @@ impl ChunkLists {
                 yi - y[j]
             };
             let dz = zi - z[j];
-            self.f.push(factor((dy * dy + dz * dz).sqrt()));
+            let r = (dy * dy + dz * dz).sqrt();
+            self.r.push(r);
+            self.f.push(factor(r));
             if fluid(j) {
                 *t |= FLUID;
             }
@@ -324,11 +330,13 @@ impl ChunkLists {
         let r = self.start[k] as usize..self.start[k + 1] as usize;
         self.tag[r.clone()]
             .iter()
+            .zip(&self.r[r.clone()])
             .zip(&self.f[r])
-            .map(|(&t, &f)| ListEntry {
+            .map(|((&t, &r), &f)| ListEntry {
                 j: (t & INDEX) as usize,
                 mirrored: t & MIRRORED != 0,
                 fluid: t & FLUID != 0,
+                r,
                 f,
             })
     }
@@ -340,11 +348,13 @@ impl ChunkLists {
         let r = self.start[k] as usize..self.tag.len();
         self.tag[r.clone()]
             .iter()
+            .zip(&self.r[r.clone()])
             .zip(&self.f[r])
-            .map(|(&t, &f)| ListEntry {
+            .map(|((&t, &r), &f)| ListEntry {
                 j: (t & INDEX) as usize,
                 mirrored: t & MIRRORED != 0,
                 fluid: t & FLUID != 0,
+                r,
                 f,
             })
     }
@@ -374,7 +384,7 @@ impl NeighbourLists {
     pub fn bytes(&self) -> usize {
         self.chunks
             .iter()
-            .map(|c| 4 * c.start.len() + 12 * c.tag.len())
+            .map(|c| 4 * c.start.len() + 20 * c.tag.len())
             .sum()
     }
 

@@ -144,8 +144,7 @@ impl Shifting {
                             yi - pt.y[j]
                         };
                         let dz = zi - pt.z[j];
-                        let r = (dy * dy + dz * dz).sqrt();
-                        let q = kernel.w(r) / w_dp;
+                        let q = kernel.w(e.r) / w_dp;
                         let q2 = q * q;
                         let fac = (1.0 + R_CLUSTER * q2 * q2) * e.f * pt.vol[j];
                         sy += fac * dy;

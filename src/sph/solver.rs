@@ -480,7 +480,7 @@ impl Simulation {
     }
 
     /// Bytes of storage per particle: the particle arrays, the cell index and sort order (2 x u32), and the
-    /// neighbour lists as they stand (4 bytes of list start per particle, 12 bytes per neighbour entry).
+    /// neighbour lists as they stand (4 bytes of list start per particle, 20 bytes per neighbour entry: index with flags, distance and kernel factor).
     pub fn bytes_per_particle(&self) -> usize {
         let n = self.pt.len().max(1);
         Particles::bytes_per_particle() + 8 + self.lists.bytes().div_ceil(n)
@@ -542,27 +542,31 @@ fn continuity_rates(lists: &NeighbourLists, pt: &mut Particles, kernel: &Wendlan
                         let j = e.j;
                         let fw = e.f * pt.vol[j];
                         let dz = zi - pt.z[j];
-                        let (dy, vyj, gj) = if e.mirrored {
-                            (yi + pt.y[j], -pt.vy[j], [-grad_rho[j][0], grad_rho[j][1]])
+                        let (dy, vyj) = if e.mirrored {
+                            (yi + pt.y[j], -pt.vy[j])
                         } else {
-                            (yi - pt.y[j], pt.vy[j], grad_rho[j])
+                            (yi - pt.y[j], pt.vy[j])
                         };
                         div += fw * ((vyi - vyj) * dy + (vzi - pt.vz[j]) * dz);
                         // Diffusion only between fluid particles: a flux to a dummy particle would
                         // be a mass flux through the wall.
                         if e.fluid && use_riemann {
-                            let r = (dy * dy + dz * dz).sqrt();
                             diff += riemann::continuity_term(
                                 p_i,
                                 pt.p[j],
                                 rho_i,
                                 pt.rho[j],
                                 fw,
-                                r,
+                                e.r,
                                 c0,
                                 -rho0_g * dz,
                             );
                         } else if e.fluid {
+                            let gj = if e.mirrored {
+                                [-grad_rho[j][0], grad_rho[j][1]]
+                            } else {
+                                grad_rho[j]
+                            };
                             let gsum = [gi[0] + gj[0], gi[1] + gj[1]];
                             diff += antuono2010::pair_term(fw, dy, dz, rho_i, pt.rho[j], gsum);
                         }
@@ -574,7 +578,7 @@ fn continuity_rates(lists: &NeighbourLists, pt: &mut Particles, kernel: &Wendlan
     pt.rate = out;
 }
 
-/// Acceleration of every fluid particle into `rate[i][0..2]` and its renormalised density gradient into
+/// Acceleration of every fluid particle into `rate[i][0..2]` and its renormalised density gradient (zero when neither the delta-SPH diffusion nor shifting uses it) into
 /// `grad_rho[i]`, with one neighbour search per fluid particle whose pairs and kernel gradient factors are
 /// kept in `lists` for the next continuity pass; returns the number of pair interactions.
 fn momentum_rates(
@@ -592,6 +596,10 @@ fn momentum_rates(
         s.alpha * h * s.c0 * s.rho0
     };
     let (use_riemann, c0) = (s.riemann, s.c0);
+    let viscous = visc != 0.0;
+    // The renormalised density gradient serves the delta-SPH diffusion and the shifting's density
+    // correction only; the Riemann scheme without shifting needs none.
+    let need_grad = !s.riemann || s.shifting;
     let eps2 = 0.01 * h * h;
     let g = s.g;
     lists.resize(pt.len());
@@ -645,17 +653,20 @@ fn momentum_rates(
                         let rho_j = pt.rho[j];
                         let fw = e.f * pt.vol[j];
                         let psum = if use_riemann {
-                            let r = (dy * dy + dz * dz).sqrt();
                             let vdotr = (vyi - vyj) * dy + (vzi - pt.vz[j]) * dz;
-                            riemann::pressure_sum(p_i, pt.p[j], rho_i, rho_j, vdotr, r, c0, e.fluid)
+                            riemann::pressure_sum(
+                                p_i, pt.p[j], rho_i, rho_j, vdotr, e.r, c0, e.fluid,
+                            )
                         } else {
                             p_i + pt.p[j]
                         };
                         let pf = psum * fw;
                         ay -= pf * dy;
                         az -= pf * dz;
-                        sums.add(fw, dy, dz, rho_j - rho_i);
-                        if e.fluid {
+                        if need_grad {
+                            sums.add(fw, dy, dz, rho_j - rho_i);
+                        }
+                        if viscous && e.fluid {
                             let r2 = dy * dy + dz * dz;
                             let vdotd = (vyi - vyj) * dy + (vzi - pt.vz[j]) * dz;
                             let pi = vdotd / (r2 + eps2) * fw;
@@ -668,7 +679,7 @@ fn momentum_rates(
                     let inv_rho = 1.0 / rho_i;
                     out[0] = (ay + visc * vy_acc) * inv_rho;
                     out[1] = (az + visc * vz_acc) * inv_rho - g;
-                    *grad = sums.gradient();
+                    *grad = if need_grad { sums.gradient() } else { [0.0; 2] };
                 }
                 count
             })
