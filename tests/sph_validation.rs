@@ -6,12 +6,12 @@
 
 mod common;
 
-use common::sph::{ZHAO_VELOCITY, quiet, window_mean, zhao_wedge};
-use slamtool::analytic::{von_karman, wagner, zhao_faltinsen1993};
+use common::sph::{ZHAO_VELOCITY, quiet, wedge_run, window_mean, zhao_wedge};
+use slamtool::analytic::{von_karman, wagner};
 use slamtool::loads::peaks::summarise;
 use slamtool::sph::{
-    self, MotionSpec, Overrides, RunOptions, SensorSpec, Setup, Simulation, body::Section,
-    case::ForceMethod, eos::EosKind,
+    self, MotionSpec, Overrides, RunOptions, SensorMethod, SensorSpec, Setup, Simulation,
+    body::Section, case::ForceMethod, eos::EosKind,
 };
 
 // ------------------------------------------------------------------------------------------------
@@ -57,6 +57,7 @@ fn still_tank(dp: f64) -> Setup {
         shifting: sph::case::DEFAULT_SHIFTING,
         riemann: sph::case::DEFAULT_RIEMANN,
         force: Default::default(),
+        sensor_method: Default::default(),
         tank_half_width: 0.15,
         tank_depth: 0.2,
         tank_wall_height: 0.05,
@@ -166,6 +167,11 @@ fn identical_on_one_and_two_threads_with(alt: bool) {
                     } else {
                         ForceMethod::PairForces
                     }),
+                    sensor_method: Some(if alt {
+                        SensorMethod::ForcePanel
+                    } else {
+                        SensorMethod::Interpolated
+                    }),
                     ..Default::default()
                 },
             )
@@ -207,70 +213,13 @@ fn identical_on_one_and_two_threads_with(alt: bool) {
 // ------------------------------------------------------------------------------------------------
 // Constant-speed wedges.
 
-struct WedgeRun {
-    beta: f64,
-    speed: f64,
-    result: sph::RunResult,
-}
-
-/// A wedge (knuckle at 0.25 m, vertical sides) at constant speed, with `sensors` sensors of 10 mm spread
-/// along the side between 15 % and 60 % of its length (all passed by the pressure peak well before the
-/// chine is wetted); runs to `t_frac` of the Wagner chine-wetting time.
-fn wedge_run(deadrise_deg: f64, speed: f64, n_half: f64, sensors: usize, t_frac: f64) -> WedgeRun {
-    let beta = deadrise_deg.to_radians();
-    let b = 0.25;
-    let section = Section::wedge(beta, b, 1.5 * b * beta.tan()).unwrap();
-    let side = b / beta.cos();
-    let specs = (0..sensors)
-        .map(|k| SensorSpec {
-            name: format!("p{k}"),
-            s_m: side * (0.15 + 0.45 * k as f64 / (sensors.max(2) - 1) as f64),
-            width_m: 0.01,
-        })
-        .collect();
-    let t_wet = 2.0 / std::f64::consts::PI * b * beta.tan() / speed;
-    let setup = sph::case::resolve(
-        "wedge",
-        &section,
-        &MotionSpec::Constant { speed_m_s: speed },
-        specs,
-        &Overrides {
-            particles_per_half_beam: Some(n_half),
-            t_end: Some(t_frac * t_wet),
-            ..Default::default()
-        },
-    )
-    .unwrap();
-    WedgeRun {
-        beta,
-        speed,
-        result: sph::run(setup, &quiet()).unwrap(),
-    }
-}
-
-/// Sensor peak pressure coefficients 2 p / (rho V^2), from peaks after a zero-phase low-pass at
-/// `cutoff_hz`, and the times of those peaks.
-fn sensor_cp(run: &WedgeRun, cutoff_hz: f64) -> Vec<(f64, f64)> {
-    let h = &run.result.history;
-    h.sensors
-        .iter()
-        .map(|col| {
-            let s = summarise(&h.t, col, Some(cutoff_hz))
-                .unwrap()
-                .filtered
-                .unwrap();
-            (2.0 * s.value / (1000.0 * run.speed * run.speed), s.time)
-        })
-        .collect()
-}
-
 /// 30 deg wedge at 5 m/s: the section force lies between the von Karman and Wagner forces (the
 /// classical lower and upper bounds), averaged over 30-60 % of the chine-wetting time. Coarse (25
 /// particles over the half-beam, this test): SPH/Wagner = 0.70 measured (0.90 with the delta-SPH scheme
 /// and the contour-integrated force, whose coarse-resolution force is too high, see the Zhao tests).
 #[test]
 fn wedge30_constant_speed_force_bounds() {
-    let run = wedge_run(30.0, 5.0, 25.0, 0, 0.65);
+    let run = wedge_run(30.0, 5.0, 25.0, 0, 0.65, SensorMethod::default());
     let h = &run.result.history;
     let t_wet = 2.0 / std::f64::consts::PI * 0.25 * run.beta.tan() / run.speed;
     let (t0, t1) = (0.3 * t_wet, 0.6 * t_wet);
@@ -286,90 +235,6 @@ fn wedge30_constant_speed_force_bounds() {
         f_sph > f_vk && f_sph < f_w,
         "SPH force {f_sph} outside [{f_vk}, {f_w}]"
     );
-}
-
-/// Errors of the sensor peaks of a wedge at 5 m/s against the reference: mean over the three sensors of
-/// |Cp / Cp_ref - 1| (peaks after a 2 kHz zero-phase low-pass) and of |t / t_ref - 1| (time of the peak
-/// against the time the reference peak passes the sensor).
-///
-/// References (data/reference/water_entry_theory.md): 30 deg, Wagner, Cp_ref = (pi^2/4) cot^2(beta) = 7.40
-/// (the form without the "1 +"), peak at the wetted half-width, i.e. (pi/2) V t above the keel; 20 deg,
-/// the Zhao & Faltinsen (1993) similarity solution, Cp_max 17.77 at z/(V t) = 0.5087 (z from the calm
-/// surface, keel at -1), i.e. 1.5087 V t above the keel. A sensor at arc length s sees the peak when that
-/// height reaches s sin(beta).
-fn wedge_peak_errors(deadrise_deg: f64, n_half: f64) -> (f64, f64) {
-    let run = wedge_run(deadrise_deg, 5.0, n_half, 3, 0.8);
-    let (cp_ref, rise) = if deadrise_deg == zhao_faltinsen1993::DEADRISE_DEG {
-        (
-            zhao_faltinsen1993::CP_MAX,
-            1.0 + zhao_faltinsen1993::Z_OVER_VT,
-        )
-    } else {
-        (
-            wagner::peak_pressure_coefficient(run.beta),
-            0.5 * std::f64::consts::PI,
-        )
-    };
-    let sens = &run.result.summary.setup.sensors;
-    let cps = sensor_cp(&run, 2000.0);
-    let (mut e_cp, mut e_t) = (0.0, 0.0);
-    for ((cp, t), s) in cps.iter().zip(sens) {
-        let t_ref = s.s_m * run.beta.sin() / (rise * run.speed);
-        eprintln!(
-            "  {deadrise_deg} deg, {n_half} particles, sensor at s = {:.3} m: Cp {cp:.2} at {:.2} ms; reference {cp_ref:.2} at {:.2} ms",
-            s.s_m,
-            t * 1e3,
-            t_ref * 1e3
-        );
-        e_cp += (cp / cp_ref - 1.0).abs() / cps.len() as f64;
-        e_t += (t / t_ref - 1.0).abs() / cps.len() as f64;
-    }
-    eprintln!(
-        "{deadrise_deg} deg wedge, {n_half} particles over the half-beam: mean Cp error {:.1} %, mean peak-time error {:.1} %",
-        e_cp * 100.0,
-        e_t * 100.0
-    );
-    (e_cp, e_t)
-}
-
-/// Convergence in particle spacing of the sensor peaks of constant-speed 30 and 20 deg wedges (Riemann
-/// scheme, the default). Measured (mean Cp error / mean peak-time error over three sensors):
-///
-/// | particles over the half-beam | 30 deg vs Wagner | 20 deg vs similarity |
-/// |---|---|---|
-/// | 15 | 12.3 % / 59 % | 9.6 % / 39 % |
-/// | 25 | 14.3 % / 31 % | 11.3 % / 23 % |
-/// | 40 (`wedge_peak_convergence_fine`) | 8.7 % / 17 % | 9.5 % / 10 % |
-///
-/// The time of the peak (where the jet root is) converges steadily; the peak value is within about 15 %
-/// at every level but does not yet fall steadily between these levels (sensor peaks are single events of
-/// a few time steps, so their scatter from particle noise is of that size). Before the Riemann scheme
-/// (delta-SPH with artificial viscosity) the 25-particle peaks were 1.3-3.4 x the reference.
-/// Asserted here: the peak-time error falls from 15 to 25 particles, and the Cp error stays below 20 %.
-#[test]
-fn wedge_peak_convergence_coarse() {
-    for deg in [30.0, zhao_faltinsen1993::DEADRISE_DEG] {
-        let (cp15, t15) = wedge_peak_errors(deg, 15.0);
-        let (cp25, t25) = wedge_peak_errors(deg, 25.0);
-        assert!(t25 < t15, "{deg} deg: peak-time error {t15} -> {t25}");
-        assert!(
-            cp15 < 0.2 && cp25 < 0.2,
-            "{deg} deg: Cp errors {cp15}, {cp25}"
-        );
-    }
-}
-
-/// The finer level of [`wedge_peak_convergence_coarse`] (40 particles over the half-beam, about half a
-/// minute per wedge): the peak-time error keeps falling and the Cp error stays below 15 %.
-#[test]
-#[ignore = "40 particles over the half-beam, about a minute"]
-fn wedge_peak_convergence_fine() {
-    for deg in [30.0, zhao_faltinsen1993::DEADRISE_DEG] {
-        let (_, t25) = wedge_peak_errors(deg, 25.0);
-        let (cp40, t40) = wedge_peak_errors(deg, 40.0);
-        assert!(t40 < t25, "{deg} deg: peak-time error {t25} -> {t40}");
-        assert!(cp40 < 0.15, "{deg} deg: Cp error {cp40}");
-    }
 }
 
 // ------------------------------------------------------------------------------------------------

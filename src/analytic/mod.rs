@@ -5,4 +5,5 @@
 pub mod generalised_wagner;
 pub mod von_karman;
 pub mod wagner;
+pub mod wagner_pressure;
 pub mod zhao_faltinsen1993;

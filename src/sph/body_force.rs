@@ -19,6 +19,7 @@ use rayon::prelude::*;
 use crate::sph::neighbours::{LIST_CHUNK, NeighbourLists};
 use crate::sph::particles::{Kind, Particles};
 use crate::sph::riemann;
+use crate::sph::sensors::SensorSet;
 
 /// Force (y, z) on the body (N/m) from the neighbour lists of the last momentum pass (which must belong
 /// to the current positions and storage order). `riemann` and `c0` select the pressure term as in the
@@ -75,4 +76,81 @@ pub fn interaction_force(
         fz += p[1];
     }
     if mirror { [0.0, 2.0 * fz] } else { [fy, fz] }
+}
+
+/// Force (y, z) on the body (N/m) from the pair forces of [`interaction_force`], attributed to the
+/// contour at the foot of each fluid particle: the force between fluid particle i and all the body
+/// dummies (real and mirror images) counts for a panel of `set` with the fraction of the contour the
+/// particle stands for (dp about the nearest contour point of i) that lies on the panel
+/// ([`SensorSet::panel_weight`]; body frame: keel at `z_keel`; starboard fluid only, y >= 0). One entry
+/// per sensor, summed per chunk and then over the chunks in their fixed order (thread-count independent).
+pub fn panel_forces(
+    lists: &NeighbourLists,
+    pt: &Particles,
+    riemann: bool,
+    c0: f64,
+    z_keel: f64,
+    set: &SensorSet,
+) -> Vec<[f64; 2]> {
+    let panels = set.panels();
+    if panels.is_empty() {
+        return Vec::new();
+    }
+    let parts: Vec<Vec<[f64; 2]>> = lists
+        .chunks
+        .par_iter()
+        .enumerate()
+        .map(|(c, list)| {
+            let mut f = vec![[0.0; 2]; panels.len()];
+            let n = LIST_CHUNK.min(pt.len().saturating_sub(c * LIST_CHUNK));
+            for k in 0..n {
+                let i = c * LIST_CHUNK + k;
+                if pt.kind[i] != Kind::Fluid || pt.y[i] < 0.0 {
+                    continue;
+                }
+                let (yi, zi, vyi, vzi) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i]);
+                let s = set.arc_of(yi, zi - z_keel);
+                if !panels.iter().any(|p| set.panel_weight(p, s) > 0.0) {
+                    continue;
+                }
+                let (p_i, rho_i, vol_i) = (pt.p[i], pt.rho[i], pt.vol[i]);
+                let (mut fy, mut fz) = (0.0, 0.0);
+                for e in list.of(k) {
+                    let j = e.j;
+                    if e.fluid || pt.kind[j] != Kind::Body {
+                        continue;
+                    }
+                    let dz = zi - pt.z[j];
+                    let (dy, vyj) = if e.mirrored {
+                        (yi + pt.y[j], -pt.vy[j])
+                    } else {
+                        (yi - pt.y[j], pt.vy[j])
+                    };
+                    let psum = if riemann {
+                        let vdotr = (vyi - vyj) * dy + (vzi - pt.vz[j]) * dz;
+                        riemann::pressure_sum(p_i, pt.p[j], rho_i, pt.rho[j], vdotr, e.r, c0, false)
+                    } else {
+                        p_i + pt.p[j]
+                    };
+                    let w = psum * vol_i * e.f * pt.vol[j];
+                    fy += w * dy;
+                    fz += w * dz;
+                }
+                for (fk, p) in f.iter_mut().zip(panels) {
+                    let a = set.panel_weight(p, s);
+                    fk[0] += a * fy;
+                    fk[1] += a * fz;
+                }
+            }
+            f
+        })
+        .collect();
+    let mut out = vec![[0.0; 2]; panels.len()];
+    for part in &parts {
+        for (o, p) in out.iter_mut().zip(part) {
+            o[0] += p[0];
+            o[1] += p[1];
+        }
+    }
+    out
 }

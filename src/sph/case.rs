@@ -75,6 +75,20 @@ pub enum ForceMethod {
     PairForces,
 }
 
+/// How a sensor's pressure is obtained.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SensorMethod {
+    /// Mean over the sensor's width of the wall pressure extrapolated from the fluid (Adami et al. 2012),
+    /// zero where the fluid support is below the dry threshold.
+    #[default]
+    Interpolated,
+    /// Normal force of the fluid-body pair forces on the body dummies whose contour projection lies
+    /// within the sensor's span, divided by the span ([`crate::sph::sensors`]): a transducer that
+    /// measures the force on its face, consistent with the pair-force section force.
+    ForcePanel,
+}
+
 /// Resolution level.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
 #[serde(rename_all = "lowercase")]
@@ -124,6 +138,9 @@ pub struct Setup {
     /// How the section force is computed.
     #[serde(default)]
     pub force: ForceMethod,
+    /// How the sensor pressures are computed.
+    #[serde(default)]
+    pub sensor_method: SensorMethod,
     pub tank_half_width: f64,
     pub tank_depth: f64,
     pub tank_wall_height: f64,
@@ -162,6 +179,7 @@ pub struct Overrides {
     pub shifting: Option<bool>,
     pub riemann: Option<bool>,
     pub force: Option<ForceMethod>,
+    pub sensor_method: Option<SensorMethod>,
     pub tank_half_width: Option<f64>,
     pub tank_depth: Option<f64>,
     pub tank_wall_height: Option<f64>,
@@ -285,6 +303,7 @@ pub fn resolve(
         shifting: o.shifting.unwrap_or(DEFAULT_SHIFTING),
         riemann: o.riemann.unwrap_or(DEFAULT_RIEMANN),
         force: o.force.unwrap_or_default(),
+        sensor_method: o.sensor_method.unwrap_or_default(),
         tank_half_width,
         tank_depth,
         tank_wall_height,
@@ -439,6 +458,7 @@ struct NumericsFile {
     shifting: Option<bool>,
     riemann: Option<bool>,
     force: Option<ForceMethod>,
+    sensor_method: Option<SensorMethod>,
     mirror: Option<bool>,
 }
 
@@ -602,6 +622,7 @@ pub fn from_source(src: &SourceText) -> Result<Setup> {
         shifting: f.numerics.shifting,
         riemann: f.numerics.riemann,
         force: f.numerics.force,
+        sensor_method: f.numerics.sensor_method,
         tank_half_width: opt(&f.tank.half_width_m, "half_width_m")?,
         tank_depth: opt(&f.tank.depth_m, "depth_m")?,
         tank_wall_height: opt(&f.tank.wall_height_m, "wall_height_m")?,

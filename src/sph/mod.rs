@@ -36,7 +36,7 @@ use crate::error::{Error, Result};
 use crate::files::write_text_atomic;
 use crate::loads::peaks::{Summary, summarise};
 
-pub use case::{Level, MotionSpec, Overrides, Setup};
+pub use case::{Level, MotionSpec, Overrides, SensorMethod, Setup};
 pub use counters::Counters;
 pub use sensors::{History, SensorSpec};
 pub use solver::Simulation;

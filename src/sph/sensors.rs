@@ -1,8 +1,16 @@
 //! Pressure sensors on the body contour and the recorded time histories.
 //!
 //! A sensor is a stretch of the starboard contour, centred at arc length s from the keel, of physical
-//! width w (a real transducer's diameter). Its pressure is the mean wall pressure over that width, from
-//! points at spacing at most dp/4, each evaluated with the Adami et al. (2012) extrapolation.
+//! width w (a real transducer's diameter). Two ways to get its pressure ([`crate::sph::case::SensorMethod`]):
+//!
+//! * interpolated: the mean wall pressure over that width, from points at spacing at most dp/4, each
+//!   evaluated with the Adami et al. (2012) extrapolation (zero where the fluid support is below the dry
+//!   threshold);
+//! * force panel: p = -F . n / w, with F the sum of the fluid-body pair forces
+//!   ([`crate::sph::body_force::panel_forces`]) on the body dummies near the span [s - w/2, s + w/2], each
+//!   weighted by the fraction of the contour it stands for (dp about its nearest contour point) that lies
+//!   on the span, and n the outward normal of the contour at s: the force a transducer measures on its
+//!   face, consistent with the pair-force section force (the panels tiling the contour add up to it).
 
 use serde::{Deserialize, Serialize};
 
@@ -39,6 +47,22 @@ pub struct SensorSet {
     points: Vec<(usize, f64, f64)>,
     counts: Vec<usize>,
     values: Vec<f64>,
+    /// Span [s0, s1) along the contour, width and outward normal (body frame) of every sensor.
+    panels: Vec<Panel>,
+    /// Starboard half contour (body frame, keel first) and the arc length at each of its points.
+    half: Vec<[f64; 2]>,
+    arc: Vec<f64>,
+    /// Particle spacing: the length of contour each body dummy stands for.
+    dp: f64,
+}
+
+/// The face of a sensor for the force-panel method.
+#[derive(Debug, Clone, Copy)]
+pub struct Panel {
+    pub s0: f64,
+    pub s1: f64,
+    pub ny: f64,
+    pub nz: f64,
 }
 
 impl SensorSet {
@@ -67,7 +91,16 @@ impl SensorSet {
             }
             set.names.push(s.name.clone());
             set.counts.push(n);
+            set.panels.push(panel(sec, s.s_m, s.width_m));
         }
+        set.dp = dp;
+        set.half = sec.half_points().to_vec();
+        set.arc = std::iter::once(0.0)
+            .chain(set.half.windows(2).scan(0.0, |acc, w| {
+                *acc += (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]);
+                Some(*acc)
+            }))
+            .collect();
         set.values = vec![0.0; specs.len()];
         Ok(set)
     }
@@ -80,6 +113,45 @@ impl SensorSet {
         &self.values
     }
 
+    pub fn panels(&self) -> &[Panel] {
+        &self.panels
+    }
+
+    /// Arc length from the keel of the starboard contour point nearest to the body-frame point (y, z).
+    pub fn arc_of(&self, y: f64, z: f64) -> f64 {
+        let (mut best, mut s_best) = (f64::INFINITY, 0.0);
+        for (k, w) in self.half.windows(2).enumerate() {
+            let (ty, tz) = (w[1][0] - w[0][0], w[1][1] - w[0][1]);
+            let l2 = ty * ty + tz * tz;
+            if l2 == 0.0 {
+                continue;
+            }
+            let f = (((y - w[0][0]) * ty + (z - w[0][1]) * tz) / l2).clamp(0.0, 1.0);
+            let (dy, dz) = (y - w[0][0] - f * ty, z - w[0][1] - f * tz);
+            let d2 = dy * dy + dz * dz;
+            if d2 < best {
+                best = d2;
+                s_best = self.arc[k] + f * (self.arc[k + 1] - self.arc[k]);
+            }
+        }
+        s_best
+    }
+
+    /// Fraction of a body dummy at arc length `s` (standing for the contour [s - dp/2, s + dp/2]) that
+    /// lies on `panel`: overlap of the two spans divided by dp.
+    pub fn panel_weight(&self, panel: &Panel, s: f64) -> f64 {
+        let lo = panel.s0.max(s - 0.5 * self.dp);
+        let hi = panel.s1.min(s + 0.5 * self.dp);
+        ((hi - lo) / self.dp).max(0.0)
+    }
+
+    /// Set the sensor values from the body forces (y, z) on the panels (N/m), in panel order.
+    pub fn set_from_panel_forces(&mut self, forces: &[[f64; 2]]) {
+        for ((v, f), p) in self.values.iter_mut().zip(forces).zip(&self.panels) {
+            *v = -(f[0] * p.ny + f[1] * p.nz) / (p.s1 - p.s0);
+        }
+    }
+
     /// Sample all sensors with the body keel at `z_keel`, given a wall-pressure function of (y, z).
     pub fn sample(&mut self, z_keel: f64, pressure: &impl Fn(f64, f64) -> f64) {
         self.values.iter_mut().for_each(|v| *v = 0.0);
@@ -89,6 +161,29 @@ impl SensorSet {
         for (v, &n) in self.values.iter_mut().zip(&self.counts) {
             *v /= n as f64;
         }
+    }
+}
+
+/// The panel of a sensor centred at arc length `s` of width `w`: its span and the outward normal at s.
+fn panel(sec: &Section, s: f64, w: f64) -> Panel {
+    let (mut acc, mut n) = (0.0, [0.0, -1.0]);
+    for seg in sec.half_points().windows(2) {
+        let (ty, tz) = (seg[1][0] - seg[0][0], seg[1][1] - seg[0][1]);
+        let l = ty.hypot(tz);
+        if l > 0.0 {
+            // Starboard half runs keel -> deck; the water is to the right of that direction.
+            n = [tz / l, -ty / l];
+            if s <= acc + l {
+                break;
+            }
+        }
+        acc += l;
+    }
+    Panel {
+        s0: s - 0.5 * w,
+        s1: s + 0.5 * w,
+        ny: n[0],
+        nz: n[1],
     }
 }
 

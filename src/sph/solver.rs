@@ -17,7 +17,8 @@
 //! becomes 2 P* and the delta-SPH term the Riemann density dissipation of [`crate::sph::riemann`], without
 //! artificial viscosity. Optional particle shifting after each drift: [`crate::sph::shifting`]. Section
 //! force: the fluid-body pair forces ([`crate::sph::body_force`], default) or the contour integral of the
-//! extrapolated wall pressure; sensors and the contour pressure always use the extrapolated pressure.
+//! extrapolated wall pressure; the contour pressure always uses the extrapolated pressure, the sensors
+//! either that (default) or the pair forces on their panel ([`crate::sph::sensors`]).
 //!
 //! Every sum is a gather over the neighbours of one particle in the fixed cell-sorted order, so the
 //! results are bit-identical on any number of threads.
@@ -28,7 +29,7 @@ use crate::error::{Error, Result};
 use crate::sph::body::{self, ContourPoint, Motion, Section};
 use crate::sph::body_force;
 use crate::sph::boundary::adami2012;
-use crate::sph::case::{ForceMethod, Setup};
+use crate::sph::case::{ForceMethod, SensorMethod, Setup};
 use crate::sph::counters::{Counters, Stage};
 use crate::sph::diffusion::antuono2010;
 use crate::sph::eos::Eos;
@@ -297,7 +298,21 @@ impl Simulation {
         self.body.fy_starboard = fy_s;
         self.body.p_contour_max = p_max;
         self.body.s_at_p_max = s_max;
-        self.sensors.sample(zk, &sample);
+        match self.setup.sensor_method {
+            SensorMethod::Interpolated => self.sensors.sample(zk, &sample),
+            SensorMethod::ForcePanel => {
+                let s = &self.setup;
+                let f = body_force::panel_forces(
+                    &self.lists,
+                    &self.pt,
+                    s.riemann,
+                    s.c0,
+                    zk,
+                    &self.sensors,
+                );
+                self.sensors.set_from_panel_forces(&f);
+            }
+        }
         self.counters.add(Stage::Sensors, t0.elapsed());
     }
 

@@ -1,6 +1,8 @@
 //! Shared fixtures for the SPH tests: reference data copied with provenance, and small helpers.
 
-use slamtool::sph::{RunOptions, body::Section};
+use slamtool::sph::{
+    self, MotionSpec, Overrides, RunOptions, SensorMethod, SensorSpec, body::Section,
+};
 
 /// data/reference/zhao1996_wedge30_velocity.csv: Zhao, Faltinsen & Aarsnes (1996) 30 deg wedge drop,
 /// measured downward velocity (m/s), eye-digitised, +-0.05 m/s. Columns t_ms, v_down_m_s.
@@ -36,4 +38,54 @@ pub fn window_mean(t: &[f64], x: &[f64], t0: f64, t1: f64) -> f64 {
         .map(|(_, x)| *x)
         .collect();
     v.iter().sum::<f64>() / v.len() as f64
+}
+
+/// A constant-speed wedge run (see [`wedge_run`]).
+pub struct WedgeRun {
+    pub beta: f64,
+    pub speed: f64,
+    pub result: sph::RunResult,
+}
+
+/// A wedge (knuckle at 0.25 m, vertical sides) at constant speed, with `sensors` sensors of 10 mm spread
+/// along the side between 15 % and 60 % of its length (all passed by the pressure peak well before the
+/// chine is wetted), sensor pressures by `method`; runs to `t_frac` of the Wagner chine-wetting time.
+pub fn wedge_run(
+    deadrise_deg: f64,
+    speed: f64,
+    n_half: f64,
+    sensors: usize,
+    t_frac: f64,
+    method: SensorMethod,
+) -> WedgeRun {
+    let beta = deadrise_deg.to_radians();
+    let b = 0.25;
+    let section = Section::wedge(beta, b, 1.5 * b * beta.tan()).unwrap();
+    let side = b / beta.cos();
+    let specs = (0..sensors)
+        .map(|k| SensorSpec {
+            name: format!("p{k}"),
+            s_m: side * (0.15 + 0.45 * k as f64 / (sensors.max(2) - 1) as f64),
+            width_m: 0.01,
+        })
+        .collect();
+    let t_wet = 2.0 / std::f64::consts::PI * b * beta.tan() / speed;
+    let setup = sph::case::resolve(
+        "wedge",
+        &section,
+        &MotionSpec::Constant { speed_m_s: speed },
+        specs,
+        &Overrides {
+            particles_per_half_beam: Some(n_half),
+            t_end: Some(t_frac * t_wet),
+            sensor_method: Some(method),
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    WedgeRun {
+        beta,
+        speed,
+        result: sph::run(setup, &quiet()).unwrap(),
+    }
 }
