@@ -696,6 +696,14 @@ mod tests {
         assert!(!s.riemann && s.shifting && s.force == ForceMethod::Contour);
         let e = parse(&format!("{base}[numerics]\nforce = \"pressure\"\n")).unwrap_err();
         assert!(e.to_string().starts_with("case.toml:7:9:"), "{e}");
+        assert_eq!(s.sensor_method, SensorMethod::Interpolated);
+        let s = parse(&format!(
+            "{base}[numerics]\nsensor_method = \"force_panel\"\n"
+        ))
+        .unwrap();
+        assert_eq!(s.sensor_method, SensorMethod::ForcePanel);
+        let e = parse(&format!("{base}[numerics]\nsensor_method = \"panel\"\n")).unwrap_err();
+        assert!(e.to_string().starts_with("case.toml:7:17:"), "{e}");
     }
 
     #[test]
