@@ -345,6 +345,19 @@ pub fn check(s: &Setup) -> Result<()> {
     {
         return Err(bad("mass per metre", *mass_per_m_kg));
     }
+    // Weak compressibility needs the sound speed well above the flow speed; at or above it the
+    // "incompressible" water is hit supersonically and the results mean nothing.
+    if let Some(m) = &s.motion {
+        let v = m.build()?.max_speed(s.t_end);
+        if v >= s.c0 {
+            return Err(Error::Invalid(format!(
+                "sound speed c0 = {} m/s is not above the body speed {v} m/s: weakly compressible SPH needs \
+                 c0 well above the flow speed (the automatic choice gives about 20 times the entry speed \
+                 at 30 deg deadrise)",
+                s.c0
+            )));
+        }
+    }
     Ok(())
 }
 
