@@ -10,6 +10,7 @@ pub mod body;
 pub mod body_force;
 pub mod boundary;
 pub mod case;
+pub mod case_file;
 pub mod counters;
 pub mod diffusion;
 pub mod eos;
