@@ -19,6 +19,7 @@ pub mod kernel;
 pub mod neighbours;
 pub mod output;
 pub mod particles;
+pub mod rates;
 pub mod riemann;
 pub mod sensors;
 pub mod shifting;
