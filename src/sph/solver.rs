@@ -288,8 +288,20 @@ impl Simulation {
         }
         if self.setup.force == ForceMethod::PairForces {
             let s = &self.setup;
-            [fy, fz] =
-                body_force::interaction_force(&self.lists, &self.pt, s.riemann, s.c0, s.mirror);
+            // Heights a fluid neighbour of a body dummy can have: the section, its dummy layers (one
+            // kernel support thick) and one kernel support, plus one grid row (h), the spread of the
+            // heights within a row of the cell-sorted storage.
+            let reach = 2.0 * self.kernel.support() + self.kernel.h();
+            let height = self.section.as_ref().map_or(0.0, |x| x.height());
+            let z_range = [zk - reach, zk + height + reach];
+            [fy, fz] = body_force::interaction_force(
+                &self.lists,
+                &self.pt,
+                s.riemann,
+                s.c0,
+                s.mirror,
+                z_range,
+            );
         }
         self.body.fy = fy;
         self.body.fz = fz;
