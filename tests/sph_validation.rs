@@ -384,7 +384,7 @@ fn diverging_run_stops_and_keeps_histories() {
         Vec::new(),
         &Overrides {
             dp: Some(0.02),
-            c0: Some(3.0),
+            c0: Some(6.0),
             // The delta-SPH scheme: with the Riemann dissipation this case runs to the end (39 steps of
             // a meaningless flow) instead of diverging, and the test is about the divergence handling.
             riemann: Some(false),

@@ -23,13 +23,16 @@ use crate::sph::sensors::SensorSet;
 
 /// Force (y, z) on the body (N/m) from the neighbour lists of the last momentum pass (which must belong
 /// to the current positions and storage order). `riemann` and `c0` select the pressure term as in the
-/// momentum pass.
+/// momentum pass. `z_range` bounds the heights of the fluid particles that can touch a body dummy (the
+/// body's height range widened by the dummy layers and the kernel support): the particles are sorted by
+/// grid row, so a chunk whose first and last particles lie both below or both above it is skipped.
 pub fn interaction_force(
     lists: &NeighbourLists,
     pt: &Particles,
     riemann: bool,
     c0: f64,
     mirror: bool,
+    z_range: [f64; 2],
 ) -> [f64; 2] {
     let parts: Vec<[f64; 2]> = lists
         .chunks
@@ -38,6 +41,13 @@ pub fn interaction_force(
         .map(|(c, list)| {
             let (mut fy, mut fz) = (0.0, 0.0);
             let n = LIST_CHUNK.min(pt.len().saturating_sub(c * LIST_CHUNK));
+            let (first, last) = (c * LIST_CHUNK, c * LIST_CHUNK + n.max(1) - 1);
+            if n == 0
+                || (pt.z[first].max(pt.z[last]) < z_range[0])
+                || (pt.z[first].min(pt.z[last]) > z_range[1])
+            {
+                return [0.0, 0.0];
+            }
             for k in 0..n {
                 let i = c * LIST_CHUNK + k;
                 if pt.kind[i] != Kind::Fluid {
@@ -109,17 +119,14 @@ pub fn panel_forces(
                     continue;
                 }
                 let (yi, zi, vyi, vzi) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i]);
-                let s = set.arc_of(yi, zi - z_keel);
-                if !panels.iter().any(|p| set.panel_weight(p, s) > 0.0) {
-                    continue;
-                }
                 let (p_i, rho_i, vol_i) = (pt.p[i], pt.rho[i], pt.vol[i]);
-                let (mut fy, mut fz) = (0.0, 0.0);
+                let (mut fy, mut fz, mut touches) = (0.0, 0.0, false);
                 for e in list.of(k) {
                     let j = e.j;
                     if e.fluid || pt.kind[j] != Kind::Body {
                         continue;
                     }
+                    touches = true;
                     let dz = zi - pt.z[j];
                     let (dy, vyj) = if e.mirrored {
                         (yi + pt.y[j], -pt.vy[j])
@@ -136,6 +143,10 @@ pub fn panel_forces(
                     fy += w * dy;
                     fz += w * dz;
                 }
+                if !touches {
+                    continue;
+                }
+                let s = set.arc_of(yi, zi - z_keel);
                 for (fk, p) in f.iter_mut().zip(panels) {
                     let a = set.panel_weight(p, s);
                     fk[0] += a * fy;

@@ -233,6 +233,19 @@ pub struct ListEntry {
     pub f: f64,
 }
 
+impl ListEntry {
+    /// r_i - r_j for particle i at (yi, zi), with r_j the mirror image when the entry is one.
+    #[inline(always)]
+    pub fn offset(&self, yi: f64, zi: f64, y: &[f64], z: &[f64]) -> (f64, f64) {
+        let dy = if self.mirrored {
+            yi + y[self.j]
+        } else {
+            yi - y[self.j]
+        };
+        (dy, zi - z[self.j])
+    }
+}
+
 /// Neighbours of the particles of one chunk, in search order.
 #[derive(Debug, Clone, Default)]
 pub struct ChunkLists {

@@ -87,12 +87,7 @@ impl Shifting {
                     let (mut b11, mut b12, mut b22, mut gy, mut gz) = (0.0, 0.0, 0.0, 0.0, 0.0);
                     for e in list.of(k) {
                         let j = e.j;
-                        let dy = if e.mirrored {
-                            yi + pt.y[j]
-                        } else {
-                            yi - pt.y[j]
-                        };
-                        let dz = zi - pt.z[j];
+                        let (dy, dz) = e.offset(yi, zi, &pt.y, &pt.z);
                         let fv = e.f * pt.vol[j];
                         // B = sum grad_i W (x) r_ji V = -sum F V r_ij (x) r_ij.
                         b11 -= fv * dy * dy;
@@ -138,12 +133,7 @@ impl Shifting {
                     let (mut sy, mut sz) = (0.0, 0.0);
                     for e in list.of(k) {
                         let j = e.j;
-                        let dy = if e.mirrored {
-                            yi + pt.y[j]
-                        } else {
-                            yi - pt.y[j]
-                        };
-                        let dz = zi - pt.z[j];
+                        let (dy, dz) = e.offset(yi, zi, &pt.y, &pt.z);
                         let q = kernel.w(e.r) / w_dp;
                         let q2 = q * q;
                         let fac = (1.0 + R_CLUSTER * q2 * q2) * e.f * pt.vol[j];

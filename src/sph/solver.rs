@@ -31,13 +31,12 @@ use crate::sph::body_force;
 use crate::sph::boundary::adami2012;
 use crate::sph::case::{ForceMethod, SensorMethod, Setup};
 use crate::sph::counters::{Counters, Stage};
-use crate::sph::diffusion::antuono2010;
 use crate::sph::eos::Eos;
 use crate::sph::integrator;
 use crate::sph::kernel::WendlandC2;
-use crate::sph::neighbours::{Grid, LIST_CHUNK, NeighbourLists};
+use crate::sph::neighbours::{Grid, NeighbourLists};
 use crate::sph::particles::{Kind, Particles};
-use crate::sph::riemann;
+use crate::sph::rates::{continuity_rates, momentum_rates};
 use crate::sph::sensors::{History, SensorSet};
 use crate::sph::shifting::Shifting;
 use crate::sph::tank::Tank;
@@ -290,8 +289,20 @@ impl Simulation {
         }
         if self.setup.force == ForceMethod::PairForces {
             let s = &self.setup;
-            [fy, fz] =
-                body_force::interaction_force(&self.lists, &self.pt, s.riemann, s.c0, s.mirror);
+            // Heights a fluid neighbour of a body dummy can have: the section, its dummy layers (one
+            // kernel support thick) and one kernel support, plus one grid row (h), the spread of the
+            // heights within a row of the cell-sorted storage.
+            let reach = 2.0 * self.kernel.support() + self.kernel.h();
+            let height = self.section.as_ref().map_or(0.0, |x| x.height());
+            let z_range = [zk - reach, zk + height + reach];
+            [fy, fz] = body_force::interaction_force(
+                &self.lists,
+                &self.pt,
+                s.riemann,
+                s.c0,
+                s.mirror,
+                z_range,
+            );
         }
         self.body.fy = fy;
         self.body.fz = fz;
@@ -525,182 +536,4 @@ impl Simulation {
     pub fn failure(&self, why: &str) -> Error {
         Error::Numerical(format!("SPH run stopped at t = {:.6} s: {why}", self.time))
     }
-}
-
-/// Density rate of every fluid particle (continuity with delta-SPH diffusion) into `rate[i][2]`, over the
-/// neighbour lists of the last momentum pass (which must have run at the current positions and storage
-/// order; only the velocities have changed since).
-fn continuity_rates(lists: &NeighbourLists, pt: &mut Particles, kernel: &WendlandC2, s: &Setup) {
-    let delta_term = s.delta * kernel.h() * s.c0;
-    let (use_riemann, c0, rho0_g) = (s.riemann, s.c0, s.rho0 * s.g);
-    let mut out = std::mem::take(&mut pt.rate);
-    {
-        let grad_rho = &pt.grad_rho[..pt.len()];
-        let pt = pt.view();
-        out.par_chunks_mut(LIST_CHUNK)
-            .zip(lists.chunks.par_iter())
-            .enumerate()
-            .for_each(|(c, (out, list))| {
-                for (k, out) in out.iter_mut().enumerate() {
-                    let i = c * LIST_CHUNK + k;
-                    if pt.kind[i] != Kind::Fluid {
-                        out[2] = 0.0;
-                        continue;
-                    }
-                    let (yi, zi, vyi, vzi, rho_i, p_i) =
-                        (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i], pt.rho[i], pt.p[i]);
-                    // Riemann dissipation is scaled by rho_i, delta-SPH by delta h c0.
-                    let diff_scale = if use_riemann { rho_i } else { delta_term };
-                    let gi = grad_rho[i];
-                    let (mut div, mut diff) = (0.0, 0.0);
-                    for e in list.of(k) {
-                        let j = e.j;
-                        let fw = e.f * pt.vol[j];
-                        let dz = zi - pt.z[j];
-                        let (dy, vyj) = if e.mirrored {
-                            (yi + pt.y[j], -pt.vy[j])
-                        } else {
-                            (yi - pt.y[j], pt.vy[j])
-                        };
-                        div += fw * ((vyi - vyj) * dy + (vzi - pt.vz[j]) * dz);
-                        // Diffusion only between fluid particles: a flux to a dummy particle would
-                        // be a mass flux through the wall.
-                        if e.fluid && use_riemann {
-                            diff += riemann::continuity_term(
-                                p_i,
-                                pt.p[j],
-                                rho_i,
-                                pt.rho[j],
-                                fw,
-                                e.r,
-                                c0,
-                                -rho0_g * dz,
-                            );
-                        } else if e.fluid {
-                            let gj = if e.mirrored {
-                                [-grad_rho[j][0], grad_rho[j][1]]
-                            } else {
-                                grad_rho[j]
-                            };
-                            let gsum = [gi[0] + gj[0], gi[1] + gj[1]];
-                            diff += antuono2010::pair_term(fw, dy, dz, rho_i, pt.rho[j], gsum);
-                        }
-                    }
-                    out[2] = rho_i * div + diff_scale * diff;
-                }
-            });
-    }
-    pt.rate = out;
-}
-
-/// Acceleration of every fluid particle into `rate[i][0..2]` and its renormalised density gradient (zero when neither the delta-SPH diffusion nor shifting uses it) into
-/// `grad_rho[i]`, with one neighbour search per fluid particle whose pairs and kernel gradient factors are
-/// kept in `lists` for the next continuity pass; returns the number of pair interactions.
-fn momentum_rates(
-    grid: &Grid,
-    lists: &mut NeighbourLists,
-    pt: &mut Particles,
-    kernel: &WendlandC2,
-    s: &Setup,
-) -> u64 {
-    let h = kernel.h();
-    // With the Riemann scheme its dissipation replaces the artificial viscosity.
-    let visc = if s.riemann {
-        0.0
-    } else {
-        s.alpha * h * s.c0 * s.rho0
-    };
-    let (use_riemann, c0) = (s.riemann, s.c0);
-    let viscous = visc != 0.0;
-    // The renormalised density gradient serves the delta-SPH diffusion and the shifting's density
-    // correction only; the Riemann scheme without shifting needs none.
-    let need_grad = !s.riemann || s.shifting;
-    let eps2 = 0.01 * h * h;
-    let g = s.g;
-    lists.resize(pt.len());
-    let mut out = std::mem::take(&mut pt.rate);
-    let mut grad = std::mem::take(&mut pt.grad_rho);
-    let n = {
-        let pt = pt.view();
-        out.par_chunks_mut(LIST_CHUNK)
-            .zip(grad.par_chunks_mut(LIST_CHUNK))
-            .zip(lists.chunks.par_iter_mut())
-            .enumerate()
-            .map(|(c, ((out, grad), list))| {
-                list.clear();
-                let mut count = 0u64;
-                for (k, (out, grad)) in out.iter_mut().zip(grad.iter_mut()).enumerate() {
-                    let i = c * LIST_CHUNK + k;
-                    if pt.kind[i] != Kind::Fluid {
-                        out[0] = 0.0;
-                        out[1] = 0.0;
-                        *grad = [0.0; 2];
-                        list.end_particle();
-                        continue;
-                    }
-                    let (yi, zi, vyi, vzi) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i]);
-                    let (rho_i, p_i) = (pt.rho[i], pt.p[i]);
-                    // Search first (filling the list), then sum over the list: the accumulators stay
-                    // in registers instead of living behind the search closure.
-                    list.push_neighbours(
-                        grid,
-                        pt.y,
-                        pt.z,
-                        yi,
-                        zi,
-                        i,
-                        kernel.support2(),
-                        |j| pt.kind[j] == Kind::Fluid,
-                        |r| kernel.grad_factor(r),
-                    );
-                    let (mut ay, mut az, mut vy_acc, mut vz_acc) = (0.0, 0.0, 0.0, 0.0);
-                    let mut sums = antuono2010::GradientSums::default();
-                    let mut m = 0u64;
-                    for e in list.of_last() {
-                        m += 1;
-                        let j = e.j;
-                        let dz = zi - pt.z[j];
-                        let (dy, vyj) = if e.mirrored {
-                            (yi + pt.y[j], -pt.vy[j])
-                        } else {
-                            (yi - pt.y[j], pt.vy[j])
-                        };
-                        let rho_j = pt.rho[j];
-                        let fw = e.f * pt.vol[j];
-                        let psum = if use_riemann {
-                            let vdotr = (vyi - vyj) * dy + (vzi - pt.vz[j]) * dz;
-                            riemann::pressure_sum(
-                                p_i, pt.p[j], rho_i, rho_j, vdotr, e.r, c0, e.fluid,
-                            )
-                        } else {
-                            p_i + pt.p[j]
-                        };
-                        let pf = psum * fw;
-                        ay -= pf * dy;
-                        az -= pf * dz;
-                        if need_grad {
-                            sums.add(fw, dy, dz, rho_j - rho_i);
-                        }
-                        if viscous && e.fluid {
-                            let r2 = dy * dy + dz * dz;
-                            let vdotd = (vyi - vyj) * dy + (vzi - pt.vz[j]) * dz;
-                            let pi = vdotd / (r2 + eps2) * fw;
-                            vy_acc += pi * dy;
-                            vz_acc += pi * dz;
-                        }
-                    }
-                    count += m;
-                    list.end_particle();
-                    let inv_rho = 1.0 / rho_i;
-                    out[0] = (ay + visc * vy_acc) * inv_rho;
-                    out[1] = (az + visc * vz_acc) * inv_rho - g;
-                    *grad = if need_grad { sums.gradient() } else { [0.0; 2] };
-                }
-                count
-            })
-            .sum()
-    };
-    pt.grad_rho = grad;
-    pt.rate = out;
-    n
 }

@@ -1,4 +1,5 @@
-//! Caveats attached to an SPH run summary: the single-phase (no air) limit at low deadrise.
+//! Checks around an SPH run: settings refused before the run, and caveats attached to its summary (the
+//! single-phase, no-air limit at low deadrise).
 
 use slamtool::sph::{self, MotionSpec, Overrides, RunOptions, body::Section};
 
@@ -27,4 +28,26 @@ fn low_deadrise_runs_carry_the_single_phase_warning() {
     assert_eq!(w.len(), 1, "{w:?}");
     assert!(w[0].contains("air cushion"), "{}", w[0]);
     assert!(short_wedge_run(30.0).warnings.is_empty());
+}
+
+#[test]
+fn a_sound_speed_not_above_the_entry_speed_is_refused() {
+    let section = Section::wedge(30f64.to_radians(), 0.1, 0.1).unwrap();
+    let resolve = |c0: f64| {
+        sph::case::resolve(
+            "wedge",
+            &section,
+            &MotionSpec::Constant { speed_m_s: 5.0 },
+            Vec::new(),
+            &Overrides {
+                particles_per_half_beam: Some(12.0),
+                c0: Some(c0),
+                ..Default::default()
+            },
+        )
+    };
+    let e = resolve(4.0).unwrap_err().to_string();
+    assert!(e.contains("sound speed") && e.contains("5 m/s"), "{e}");
+    assert!(resolve(5.0).is_err());
+    assert!(resolve(60.0).is_ok());
 }
