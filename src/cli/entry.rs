@@ -4,7 +4,8 @@ use std::path::PathBuf;
 
 use clap::{Args, Subcommand};
 use slamtool::sph::{
-    self, Level, MotionSpec, Overrides, RunOptions, RunResult, SensorSpec, body::Section,
+    self, Level, MotionSpec, Overrides, RunOptions, RunResult, SensorMethod, SensorSpec,
+    body::Section,
 };
 
 #[derive(Debug, Subcommand)]
@@ -55,6 +56,11 @@ pub struct Common {
     /// Cut-off (Hz) of the zero-phase low-pass filter for the reported filtered peaks.
     #[arg(long)]
     filter_hz: Option<f64>,
+    /// How the sensor pressures are computed: interpolated (wall pressure extrapolated from the fluid,
+    /// averaged over the sensor width; default) or force-panel (fluid-body pair forces on the sensor's
+    /// face divided by its width).
+    #[arg(long, value_enum)]
+    sensor_method: Option<SensorMethod>,
     /// Resolutions run for the convergence statement of every peak, the requested one included: 2 adds a
     /// companion run at twice the particle spacing (about 1/8 of the cost), 3 adds one at four times;
     /// 1 runs the requested resolution only (the statements then say "not assessed").
@@ -113,6 +119,7 @@ fn overrides(c: &Common) -> Overrides {
         t_end: c.t_end,
         mirror: c.full_domain.then_some(false),
         filter_cutoff_hz: c.filter_hz,
+        sensor_method: c.sensor_method,
         ..Default::default()
     }
 }
@@ -224,6 +231,9 @@ fn case(a: CaseArgs) -> slamtool::Result<()> {
     }
     if let Some(f) = o.filter_cutoff_hz {
         setup.filter_cutoff_hz = Some(f);
+    }
+    if let Some(m) = o.sensor_method {
+        setup.sensor_method = m;
     }
     let name = setup.name.clone();
     go(setup, &a.common, &name)

@@ -73,7 +73,7 @@ pub enum ForceMethod {
 }
 
 /// How a sensor's pressure is obtained.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize, clap::ValueEnum)]
 #[serde(rename_all = "snake_case")]
 pub enum SensorMethod {
     /// Mean over the sensor's width of the wall pressure extrapolated from the fluid (Adami et al. 2012),
