@@ -16,7 +16,7 @@
 
 use rayon::prelude::*;
 
-use crate::sph::neighbours::{LIST_CHUNK, NeighbourLists};
+use crate::sph::neighbours::{ChunkLists, LIST_CHUNK, NeighbourLists};
 use crate::sph::particles::{Kind, Particles};
 use crate::sph::riemann;
 use crate::sph::sensors::SensorSet;
@@ -53,28 +53,9 @@ pub fn interaction_force(
                 if pt.kind[i] != Kind::Fluid {
                     continue;
                 }
-                let (yi, zi, vyi, vzi) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i]);
-                let (p_i, rho_i, vol_i) = (pt.p[i], pt.rho[i], pt.vol[i]);
-                for e in list.of(k) {
-                    let j = e.j;
-                    if e.fluid || pt.kind[j] != Kind::Body {
-                        continue;
-                    }
-                    let dz = zi - pt.z[j];
-                    let (dy, vyj) = if e.mirrored {
-                        (yi + pt.y[j], -pt.vy[j])
-                    } else {
-                        (yi - pt.y[j], pt.vy[j])
-                    };
-                    let psum = if riemann {
-                        let vdotr = (vyi - vyj) * dy + (vzi - pt.vz[j]) * dz;
-                        riemann::pressure_sum(p_i, pt.p[j], rho_i, pt.rho[j], vdotr, e.r, c0, false)
-                    } else {
-                        p_i + pt.p[j]
-                    };
-                    let w = psum * vol_i * e.f * pt.vol[j];
-                    fy += w * dy;
-                    fz += w * dz;
+                if let Some([py, pz]) = body_pair_force(list, k, i, pt, riemann, c0) {
+                    fy += py;
+                    fz += pz;
                 }
             }
             [fy, fz]
@@ -118,35 +99,10 @@ pub fn panel_forces(
                 if pt.kind[i] != Kind::Fluid || pt.y[i] < 0.0 {
                     continue;
                 }
-                let (yi, zi, vyi, vzi) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i]);
-                let (p_i, rho_i, vol_i) = (pt.p[i], pt.rho[i], pt.vol[i]);
-                let (mut fy, mut fz, mut touches) = (0.0, 0.0, false);
-                for e in list.of(k) {
-                    let j = e.j;
-                    if e.fluid || pt.kind[j] != Kind::Body {
-                        continue;
-                    }
-                    touches = true;
-                    let dz = zi - pt.z[j];
-                    let (dy, vyj) = if e.mirrored {
-                        (yi + pt.y[j], -pt.vy[j])
-                    } else {
-                        (yi - pt.y[j], pt.vy[j])
-                    };
-                    let psum = if riemann {
-                        let vdotr = (vyi - vyj) * dy + (vzi - pt.vz[j]) * dz;
-                        riemann::pressure_sum(p_i, pt.p[j], rho_i, pt.rho[j], vdotr, e.r, c0, false)
-                    } else {
-                        p_i + pt.p[j]
-                    };
-                    let w = psum * vol_i * e.f * pt.vol[j];
-                    fy += w * dy;
-                    fz += w * dz;
-                }
-                if !touches {
+                let Some([fy, fz]) = body_pair_force(list, k, i, pt, riemann, c0) else {
                     continue;
-                }
-                let s = set.arc_of(yi, zi - z_keel);
+                };
+                let s = set.arc_of(pt.y[i], pt.z[i] - z_keel);
                 for (fk, p) in f.iter_mut().zip(panels) {
                     let a = set.panel_weight(p, s);
                     fk[0] += a * fy;
@@ -164,4 +120,38 @@ pub fn panel_forces(
         }
     }
     out
+}
+
+/// The force of fluid particle i (entry k of its list chunk) on all the body dummies it neighbours (real
+/// and mirror images), sum_j P_ij V_i F_ij V_j r_ij; `None` when it touches no body dummy.
+fn body_pair_force(
+    list: &ChunkLists,
+    k: usize,
+    i: usize,
+    pt: &Particles,
+    riemann: bool,
+    c0: f64,
+) -> Option<[f64; 2]> {
+    let (yi, zi, vyi, vzi) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i]);
+    let (p_i, rho_i, vol_i) = (pt.p[i], pt.rho[i], pt.vol[i]);
+    let (mut fy, mut fz, mut touches) = (0.0, 0.0, false);
+    for e in list.of(k) {
+        let j = e.j;
+        if e.fluid || pt.kind[j] != Kind::Body {
+            continue;
+        }
+        touches = true;
+        let (dy, dz) = e.offset(yi, zi, &pt.y, &pt.z);
+        let vyj = if e.mirrored { -pt.vy[j] } else { pt.vy[j] };
+        let psum = if riemann {
+            let vdotr = (vyi - vyj) * dy + (vzi - pt.vz[j]) * dz;
+            riemann::pressure_sum(p_i, pt.p[j], rho_i, pt.rho[j], vdotr, e.r, c0, false)
+        } else {
+            p_i + pt.p[j]
+        };
+        let w = psum * vol_i * e.f * pt.vol[j];
+        fy += w * dy;
+        fz += w * dz;
+    }
+    touches.then_some([fy, fz])
 }
