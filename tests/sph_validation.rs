@@ -305,12 +305,7 @@ fn check_zhao(n_half: f64, tol: f64, t_tol_ms: f64) {
         "Zhao 1996 prescribed, {n_half} particles: SPH peak {f:.0} N at {t:.2} ms (300 Hz low-pass); BEM 6650 N at 15.5 ms; measured 5150 N at 14.5 ms"
     );
     for row in ZHAO_FORCE {
-        let fs = window_mean(
-            &r.history.t,
-            &r.history.fz,
-            (row[0] - 0.5) * 1e-3,
-            (row[0] + 0.5) * 1e-3,
-        ) * ZHAO_SECTION_M;
+        let fs = zhao_section_force(&r, row[0]);
         eprintln!(
             "  t {:5.1} ms: SPH {fs:7.0} N  BEM {:6.0} N  measured {:6.0} N",
             row[0], row[2], row[1]
@@ -320,6 +315,13 @@ fn check_zhao(n_half: f64, tol: f64, t_tol_ms: f64) {
     assert!((t - 15.5).abs() < t_tol_ms, "peak time {t} ms vs 15.5 ms");
 }
 
+/// The SPH force on the Zhao et al. measuring section (N): the 1 ms window mean of the force per metre
+/// about `t_ms`, times the section length.
+fn zhao_section_force(r: &sph::RunResult, t_ms: f64) -> f64 {
+    let (t0, t1) = ((t_ms - 0.5) * 1e-3, (t_ms + 0.5) * 1e-3);
+    window_mean(&r.history.t, &r.history.fz, t0, t1) * ZHAO_SECTION_M
+}
+
 /// Mean |SPH / BEM - 1| of the force (1 ms window means) at the BEM rows up to `t_max_ms`.
 fn zhao_mean_error(r: &sph::RunResult, t_max_ms: f64) -> f64 {
     let rows: Vec<_> = ZHAO_FORCE
@@ -327,15 +329,7 @@ fn zhao_mean_error(r: &sph::RunResult, t_max_ms: f64) -> f64 {
         .filter(|row| row[0] > 0.0 && row[0] <= t_max_ms)
         .collect();
     rows.iter()
-        .map(|row| {
-            let fs = window_mean(
-                &r.history.t,
-                &r.history.fz,
-                (row[0] - 0.5) * 1e-3,
-                (row[0] + 0.5) * 1e-3,
-            ) * ZHAO_SECTION_M;
-            (fs / row[2] - 1.0).abs()
-        })
+        .map(|row| (zhao_section_force(r, row[0]) / row[2] - 1.0).abs())
         .sum::<f64>()
         / rows.len() as f64
 }
