@@ -21,6 +21,14 @@ use crate::sph::particles::{Kind, Particles};
 use crate::sph::riemann;
 use crate::sph::sensors::SensorSet;
 
+/// Per-chunk partial sums of the body forces, kept between steps so that the time loop does not allocate.
+#[derive(Debug, Clone, Default)]
+pub struct ForceScratch {
+    chunks: Vec<[f64; 2]>,
+    panels: Vec<[f64; 2]>,
+    out: Vec<[f64; 2]>,
+}
+
 /// Force (y, z) on the body (N/m) from the neighbour lists of the last momentum pass (which must belong
 /// to the current positions and storage order). `riemann` and `c0` select the pressure term as in the
 /// momentum pass. `z_range` bounds the heights of the fluid particles that can touch a body dummy (the
@@ -33,8 +41,9 @@ pub fn interaction_force(
     c0: f64,
     mirror: bool,
     z_range: [f64; 2],
+    scratch: &mut ForceScratch,
 ) -> [f64; 2] {
-    let parts: Vec<[f64; 2]> = lists
+    lists
         .chunks
         .par_iter()
         .enumerate()
@@ -60,9 +69,9 @@ pub fn interaction_force(
             }
             [fy, fz]
         })
-        .collect();
+        .collect_into_vec(&mut scratch.chunks);
     let (mut fy, mut fz) = (0.0, 0.0);
-    for p in &parts {
+    for p in &scratch.chunks {
         fy += p[0];
         fz += p[1];
     }
@@ -75,24 +84,30 @@ pub fn interaction_force(
 /// particle stands for (dp about the nearest contour point of i) that lies on the panel
 /// ([`SensorSet::panel_weight`]; body frame: keel at `z_keel`; starboard fluid only, y >= 0). One entry
 /// per sensor, summed per chunk and then over the chunks in their fixed order (thread-count independent).
-pub fn panel_forces(
+pub fn panel_forces<'a>(
     lists: &NeighbourLists,
     pt: &Particles,
     riemann: bool,
     c0: f64,
     z_keel: f64,
     set: &SensorSet,
-) -> Vec<[f64; 2]> {
+    scratch: &'a mut ForceScratch,
+) -> &'a [[f64; 2]] {
     let panels = set.panels();
-    if panels.is_empty() {
-        return Vec::new();
+    let np = panels.len();
+    scratch.out.clear();
+    scratch.out.resize(np, [0.0; 2]);
+    if np == 0 {
+        return &scratch.out;
     }
-    let parts: Vec<Vec<[f64; 2]>> = lists
-        .chunks
-        .par_iter()
+    scratch.panels.clear();
+    scratch.panels.resize(np * lists.chunks.len(), [0.0; 2]);
+    scratch
+        .panels
+        .par_chunks_mut(np)
+        .zip(lists.chunks.par_iter())
         .enumerate()
-        .map(|(c, list)| {
-            let mut f = vec![[0.0; 2]; panels.len()];
+        .for_each(|(c, (f, list))| {
             let n = LIST_CHUNK.min(pt.len().saturating_sub(c * LIST_CHUNK));
             for k in 0..n {
                 let i = c * LIST_CHUNK + k;
@@ -109,17 +124,14 @@ pub fn panel_forces(
                     fk[1] += a * fz;
                 }
             }
-            f
-        })
-        .collect();
-    let mut out = vec![[0.0; 2]; panels.len()];
-    for part in &parts {
-        for (o, p) in out.iter_mut().zip(part) {
+        });
+    for part in scratch.panels.chunks(np) {
+        for (o, p) in scratch.out.iter_mut().zip(part) {
             o[0] += p[0];
             o[1] += p[1];
         }
     }
-    out
+    &scratch.out
 }
 
 /// The force of fluid particle i (entry k of its list chunk) on all the body dummies it neighbours (real

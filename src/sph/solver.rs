@@ -85,6 +85,8 @@ pub struct Simulation {
     /// The closed section contour (body frame), for the check that no fluid went through the body.
     closed_contour: Vec<[f64; 2]>,
     sensors: SensorSet,
+    /// Partial sums of the body forces (reused every step).
+    force_scratch: body_force::ForceScratch,
     shifting: Shifting,
     pub body: BodyState,
     pub time: f64,
@@ -167,6 +169,7 @@ impl Simulation {
             contour_p: vec![0.0; n],
             closed_contour,
             sensors,
+            force_scratch: body_force::ForceScratch::default(),
             shifting: Shifting::default(),
             body,
             time: 0.0,
@@ -302,6 +305,7 @@ impl Simulation {
                 s.c0,
                 s.mirror,
                 z_range,
+                &mut self.force_scratch,
             );
         }
         self.body.fy = fy;
@@ -320,8 +324,9 @@ impl Simulation {
                     s.c0,
                     zk,
                     &self.sensors,
+                    &mut self.force_scratch,
                 );
-                self.sensors.set_from_panel_forces(&f);
+                self.sensors.set_from_panel_forces(f);
             }
         }
         self.counters.add(Stage::Sensors, t0.elapsed());
