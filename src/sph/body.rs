@@ -136,22 +136,32 @@ impl Section {
     }
 }
 
-/// Distance from a point to an open polyline.
-pub fn distance_to_polyline(c: &[[f64; 2]], y: f64, z: f64) -> f64 {
-    let mut d2 = f64::INFINITY;
-    for w in c.windows(2) {
+/// Nearest point of an open polyline to (y, z): the segment index k, the fraction f along it (0 at point
+/// k, 1 at point k + 1) and the squared distance. The first nearest segment wins ties; `None` for fewer
+/// than two points.
+pub fn nearest_on_polyline(c: &[[f64; 2]], y: f64, z: f64) -> Option<(usize, f64, f64)> {
+    let mut best: Option<(usize, f64, f64)> = None;
+    for (k, w) in c.windows(2).enumerate() {
         let (ay, az, by, bz) = (w[0][0], w[0][1], w[1][0], w[1][1]);
         let (ty, tz) = (by - ay, bz - az);
         let l2 = ty * ty + tz * tz;
-        let s = if l2 > 0.0 {
+        let f = if l2 > 0.0 {
             (((y - ay) * ty + (z - az) * tz) / l2).clamp(0.0, 1.0)
         } else {
             0.0
         };
-        let (py, pz) = (ay + s * ty - y, az + s * tz - z);
-        d2 = d2.min(py * py + pz * pz);
+        let (py, pz) = (ay + f * ty - y, az + f * tz - z);
+        let d2 = py * py + pz * pz;
+        if best.is_none_or(|b| d2 < b.2) {
+            best = Some((k, f, d2));
+        }
     }
-    d2.sqrt()
+    best
+}
+
+/// Distance from a point to an open polyline.
+pub fn distance_to_polyline(c: &[[f64; 2]], y: f64, z: f64) -> f64 {
+    nearest_on_polyline(c, y, z).map_or(f64::INFINITY, |b| b.2.sqrt())
 }
 
 /// Body-frame positions of the dummy particles: `layers` layers at depths (k + 1/2) dp under the closed

@@ -119,22 +119,9 @@ impl SensorSet {
 
     /// Arc length from the keel of the starboard contour point nearest to the body-frame point (y, z).
     pub fn arc_of(&self, y: f64, z: f64) -> f64 {
-        let (mut best, mut s_best) = (f64::INFINITY, 0.0);
-        for (k, w) in self.half.windows(2).enumerate() {
-            let (ty, tz) = (w[1][0] - w[0][0], w[1][1] - w[0][1]);
-            let l2 = ty * ty + tz * tz;
-            if l2 == 0.0 {
-                continue;
-            }
-            let f = (((y - w[0][0]) * ty + (z - w[0][1]) * tz) / l2).clamp(0.0, 1.0);
-            let (dy, dz) = (y - w[0][0] - f * ty, z - w[0][1] - f * tz);
-            let d2 = dy * dy + dz * dz;
-            if d2 < best {
-                best = d2;
-                s_best = self.arc[k] + f * (self.arc[k + 1] - self.arc[k]);
-            }
-        }
-        s_best
+        body::nearest_on_polyline(&self.half, y, z).map_or(0.0, |(k, f, _)| {
+            self.arc[k] + f * (self.arc[k + 1] - self.arc[k])
+        })
     }
 
     /// Fraction of a body dummy at arc length `s` (standing for the contour [s - dp/2, s + dp/2]) that
