@@ -13,7 +13,9 @@ use rayon::prelude::*;
 use crate::sph::case::Setup;
 use crate::sph::diffusion::antuono2010;
 use crate::sph::kernel::WendlandC2;
-use crate::sph::neighbours::{Grid, LIST_CHUNK, NeighbourLists};
+use crate::sph::neighbours::{
+    Grid, LIST_CHUNK, NeighbourLists, tag_index, tag_mirrored, with_fluid_flag,
+};
 use crate::sph::particles::{Kind, Particles};
 use crate::sph::riemann;
 
@@ -26,8 +28,23 @@ pub fn continuity_rates(
     kernel: &WendlandC2,
     s: &Setup,
 ) {
+    if s.riemann {
+        continuity_pass::<true>(lists, pt, kernel, s);
+    } else {
+        continuity_pass::<false>(lists, pt, kernel, s);
+    }
+}
+
+/// [`continuity_rates`] with the Riemann dissipation (else the delta-SPH diffusion), compiled
+/// separately so that the pair loop carries no test of the scheme.
+fn continuity_pass<const RIEMANN: bool>(
+    lists: &NeighbourLists,
+    pt: &mut Particles,
+    kernel: &WendlandC2,
+    s: &Setup,
+) {
     let delta_term = s.delta * kernel.h() * s.c0;
-    let (use_riemann, c0, rho0_g) = (s.riemann, s.c0, s.rho0 * s.g);
+    let (c0, rho0_g) = (s.c0, s.rho0 * s.g);
     let mut out = std::mem::take(&mut pt.rate);
     {
         let grad_rho = &pt.grad_rho[..pt.len()];
@@ -45,7 +62,7 @@ pub fn continuity_rates(
                     let (yi, zi, vyi, vzi, rho_i, p_i) =
                         (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i], pt.rho[i], pt.p[i]);
                     // Riemann dissipation is scaled by rho_i, delta-SPH by delta h c0.
-                    let diff_scale = if use_riemann { rho_i } else { delta_term };
+                    let diff_scale = if RIEMANN { rho_i } else { delta_term };
                     let gi = grad_rho[i];
                     let (mut div, mut diff) = (0.0, 0.0);
                     for e in list.of(k) {
@@ -60,7 +77,7 @@ pub fn continuity_rates(
                         div += fw * ((vyi - vyj) * dy + (vzi - pt.vz[j]) * dz);
                         // Diffusion only between fluid particles: a flux to a dummy particle would
                         // be a mass flux through the wall.
-                        if e.fluid && use_riemann {
+                        if e.fluid && RIEMANN {
                             diff += riemann::continuity_term(
                                 p_i,
                                 pt.p[j],
@@ -98,18 +115,37 @@ pub fn momentum_rates(
     kernel: &WendlandC2,
     s: &Setup,
 ) -> u64 {
-    let h = kernel.h();
-    // With the Riemann scheme its dissipation replaces the artificial viscosity.
-    let visc = if s.riemann {
-        0.0
-    } else {
-        s.alpha * h * s.c0 * s.rho0
-    };
-    let (use_riemann, c0) = (s.riemann, s.c0);
-    let viscous = visc != 0.0;
-    // The renormalised density gradient serves the delta-SPH diffusion and the shifting's density
-    // correction only; the Riemann scheme without shifting needs none.
+    // With the Riemann scheme its dissipation replaces the artificial viscosity. The renormalised
+    // density gradient serves the delta-SPH diffusion and the shifting's density correction only; the
+    // Riemann scheme without shifting needs none. Each combination gets its own compiled pass, so the
+    // pair loop carries no tests of the configuration.
     let need_grad = !s.riemann || s.shifting;
+    let viscous = !s.riemann && s.alpha != 0.0;
+    match (s.riemann, need_grad, viscous) {
+        (true, false, _) => momentum_pass::<true, false, false>(grid, lists, pt, kernel, s),
+        (true, true, _) => momentum_pass::<true, true, false>(grid, lists, pt, kernel, s),
+        (false, _, true) => momentum_pass::<false, true, true>(grid, lists, pt, kernel, s),
+        (false, _, false) => momentum_pass::<false, true, false>(grid, lists, pt, kernel, s),
+    }
+}
+
+/// [`momentum_rates`] for one configuration: the Riemann scheme (else the standard pressure sum),
+/// the density gradient wanted, the artificial viscosity on.
+fn momentum_pass<const RIEMANN: bool, const GRAD: bool, const VISCOUS: bool>(
+    grid: &Grid,
+    lists: &mut NeighbourLists,
+    pt: &mut Particles,
+    kernel: &WendlandC2,
+    s: &Setup,
+) -> u64 {
+    let kernel = *kernel;
+    let h = kernel.h();
+    let visc = if VISCOUS {
+        s.alpha * h * s.c0 * s.rho0
+    } else {
+        0.0
+    };
+    let c0 = s.c0;
     let eps2 = 0.01 * h * h;
     let g = s.g;
     lists.resize(pt.len());
@@ -135,48 +171,50 @@ pub fn momentum_rates(
                     }
                     let (yi, zi, vyi, vzi) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i]);
                     let (rho_i, p_i) = (pt.rho[i], pt.p[i]);
-                    // Search first (filling the list), then sum over the list: the accumulators stay
-                    // in registers instead of living behind the search closure.
-                    list.push_neighbours(
-                        grid,
-                        pt.y,
-                        pt.z,
-                        yi,
-                        zi,
-                        i,
-                        kernel.support2(),
-                        |j| pt.kind[j] == Kind::Fluid,
-                        |r| kernel.grad_factor(r),
-                    );
+                    // Search first (filling the list with the candidates' tags), then one loop over
+                    // them that completes each entry (distance, kernel factor, fluid flag) and adds its
+                    // terms: the accumulators stay in registers instead of living behind the search
+                    // closure, and the neighbours' positions are read once.
+                    list.push_candidates(grid, pt.y, pt.z, yi, zi, i, kernel.support2());
                     let (mut ay, mut az, mut vy_acc, mut vz_acc) = (0.0, 0.0, 0.0, 0.0);
                     let mut sums = antuono2010::GradientSums::default();
-                    let mut m = 0u64;
-                    for e in list.of_last() {
-                        m += 1;
-                        let j = e.j;
+                    let last = list.last_mut();
+                    let m = last.tag.len() as u64;
+                    for ((t, r_out), f_out) in last
+                        .tag
+                        .iter_mut()
+                        .zip(last.r.iter_mut())
+                        .zip(last.f.iter_mut())
+                    {
+                        let j = tag_index(*t);
+                        let mirrored = tag_mirrored(*t);
                         let dz = zi - pt.z[j];
-                        let (dy, vyj) = if e.mirrored {
+                        let (dy, vyj) = if mirrored {
                             (yi + pt.y[j], -pt.vy[j])
                         } else {
                             (yi - pt.y[j], pt.vy[j])
                         };
+                        let r = (dy * dy + dz * dz).sqrt();
+                        let f = kernel.grad_factor(r);
+                        let fluid = pt.kind[j] == Kind::Fluid;
+                        *r_out = r;
+                        *f_out = f;
+                        *t = with_fluid_flag(*t, fluid);
                         let rho_j = pt.rho[j];
-                        let fw = e.f * pt.vol[j];
-                        let psum = if use_riemann {
+                        let fw = f * pt.vol[j];
+                        let psum = if RIEMANN {
                             let vdotr = (vyi - vyj) * dy + (vzi - pt.vz[j]) * dz;
-                            riemann::pressure_sum(
-                                p_i, pt.p[j], rho_i, rho_j, vdotr, e.r, c0, e.fluid,
-                            )
+                            riemann::pressure_sum(p_i, pt.p[j], rho_i, rho_j, vdotr, r, c0, fluid)
                         } else {
                             p_i + pt.p[j]
                         };
                         let pf = psum * fw;
                         ay -= pf * dy;
                         az -= pf * dz;
-                        if need_grad {
+                        if GRAD {
                             sums.add(fw, dy, dz, rho_j - rho_i);
                         }
-                        if viscous && e.fluid {
+                        if VISCOUS && fluid {
                             let r2 = dy * dy + dz * dz;
                             let vdotd = (vyi - vyj) * dy + (vzi - pt.vz[j]) * dz;
                             let pi = vdotd / (r2 + eps2) * fw;
@@ -189,7 +227,7 @@ pub fn momentum_rates(
                     let inv_rho = 1.0 / rho_i;
                     out[0] = (ay + visc * vy_acc) * inv_rho;
                     out[1] = (az + visc * vz_acc) * inv_rho - g;
-                    *grad = if need_grad { sums.gradient() } else { [0.0; 2] };
+                    *grad = if GRAD { sums.gradient() } else { [0.0; 2] };
                 }
                 count
             })

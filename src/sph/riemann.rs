@@ -40,7 +40,10 @@ pub fn pressure_sum(
     }
     // U_L - U_R = (u_i - u_j) . e_ij = -(u_i - u_j) . r_ij / r (doubled against a mirrored wall state).
     let du = if fluid { -vdotr / r } else { -2.0 * vdotr / r };
-    let beta = (ETA * du.max(0.0)).min(c0);
+    // Comparisons rather than f64::max/min (same results, NaN included: a NaN du gives beta = 0 either
+    // way), which keeps the NaN bookkeeping of max/min out of the pair loop.
+    let approach = if du > 0.0 { ETA * du } else { 0.0 };
+    let beta = if approach < c0 { approach } else { c0 };
     p_i + p_j + beta * 0.5 * (rho_i + rho_j) * du
 }
 
