@@ -170,3 +170,58 @@ fn yettou_drop(n_half: Option<f64>, slower: bool) -> f64 {
     );
     worst
 }
+
+/// Whether the Yettou criterion (within 0.15 m/s of the measured curve up to 25 ms) can be met by a 2D
+/// model with 94 kg/m at all, checked without SPH: the momentum model d/dt [(M + k m_a) V] = M g with
+/// Wagner's added mass scaled by any k from von Karman's (2/pi)^2 to Wagner's 1 (every similarity
+/// solution of a wedge has an added mass growing like the penetration squared, so each is one of this
+/// family). Measured: the closest is k = 0.77, 0.21 m/s away (0.21 m/s below the curve at 7 ms, 0.20 m/s
+/// above it at 18 ms): the measured curve decelerates less than any of them up to 10 ms and more from 10
+/// to 17 ms, a shape that no choice of k gives. With the measured time axis shifted by 1.5 ms (not done
+/// here: the data are not adjusted) Wagner's k = 1 would come within 0.14 m/s, which points at the time
+/// origin of the re-plotted curve. The SPH behaves like this family: 0.39 m/s away at 40 particles over
+/// the half-beam and 0.25 m/s at 80 (below at 7 ms, above at 18 ms, like the best k). Asserted: no k in
+/// the family meets the 0.15 m/s criterion.
+#[test]
+fn yettou2006_criterion_against_2d_momentum_models() {
+    let rows: Vec<[f64; 2]> = yettou_velocity()
+        .into_iter()
+        .filter(|row| row[0] <= 25.0)
+        .collect();
+    let t: Vec<f64> = rows.iter().map(|row| row[0] * 1e-3).collect();
+    let k_von_karman = (2.0 / std::f64::consts::PI).powi(2);
+    let mut best = (f64::INFINITY, 0.0);
+    for step in 0..=60 {
+        let k = k_von_karman + (1.0 - k_von_karman) * step as f64 / 60.0;
+        let v = wagner::free_drop_speed_scaled(
+            25f64.to_radians(),
+            1000.0,
+            94.0,
+            5.05,
+            9.81,
+            &t,
+            1e-6,
+            k,
+        );
+        let worst = rows
+            .iter()
+            .zip(&v)
+            .map(|(row, v)| (v - row[1]).abs())
+            .fold(0.0, f64::max);
+        if step % 10 == 0 {
+            eprintln!("  k {k:.3}: largest |model - measured| up to 25 ms {worst:.3} m/s");
+        }
+        if worst < best.0 {
+            best = (worst, k);
+        }
+    }
+    eprintln!(
+        "Yettou 2006: closest 2D momentum model k = {:.3}, {:.3} m/s from the measured curve",
+        best.1, best.0
+    );
+    assert!(
+        best.0 > 0.15,
+        "a 2D momentum model comes within {} m/s",
+        best.0
+    );
+}

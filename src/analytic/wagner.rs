@@ -36,7 +36,7 @@ pub fn force(beta: f64, rho: f64, v: f64, t: f64) -> f64 {
 
 /// Downward speed of a freely falling wedge (mass `mass_per_m` per metre, entry speed `v0`) at the times
 /// `t` (ascending, from 0), from the momentum form above, integrated with steps of at most `dt_max`
-/// (midpoint rule).
+/// (midpoint rule). This is [`free_drop_speed_scaled`] with the factor 1.
 pub fn free_drop_speed(
     beta: f64,
     rho: f64,
@@ -46,8 +46,26 @@ pub fn free_drop_speed(
     t: &[f64],
     dt_max: f64,
 ) -> Vec<f64> {
+    free_drop_speed_scaled(beta, rho, mass_per_m, v0, g, t, dt_max, 1.0)
+}
+
+/// [`free_drop_speed`] with the added mass scaled by `factor`: d/dt [(M + k m_a(zeta)) V] = M g with
+/// m_a = (pi/2) rho c^2 and Wagner's c = (pi/2) zeta / tan(beta) (zeta the keel's penetration). k = 1 is
+/// Wagner's momentum model; k = (2/pi)^2 = 0.405 is von Karman's (c = zeta / tan(beta)). Any momentum
+/// model whose added mass grows like zeta^2 (every similarity solution of a wedge) is one of this family.
+#[allow(clippy::too_many_arguments)]
+pub fn free_drop_speed_scaled(
+    beta: f64,
+    rho: f64,
+    mass_per_m: f64,
+    v0: f64,
+    g: f64,
+    t: &[f64],
+    dt_max: f64,
+    factor: f64,
+) -> Vec<f64> {
     let k = 0.5 * PI / beta.tan();
-    let added = |z: f64| 0.5 * PI * rho * (k * z) * (k * z);
+    let added = |z: f64| factor * 0.5 * PI * rho * (k * z) * (k * z);
     let speed = |momentum: f64, z: f64| momentum / (mass_per_m + added(z));
     let (mut time, mut z, mut momentum) = (0.0, 0.0, mass_per_m * v0);
     let mut out = Vec::with_capacity(t.len());
