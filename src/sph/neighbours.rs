@@ -422,24 +422,6 @@ impl ChunkLists {
             })
     }
 
-    /// The neighbours pushed since the last [`ChunkLists::end_particle`] (the particle being built).
-    #[inline(always)]
-    pub fn of_last(&self) -> impl Iterator<Item = ListEntry> + '_ {
-        let k = self.start.len() - 1;
-        let r = self.start[k] as usize..self.tag.len();
-        self.tag[r.clone()]
-            .iter()
-            .zip(&self.r[r.clone()])
-            .zip(&self.f[r])
-            .map(|((&t, &r), &f)| ListEntry {
-                j: (t & INDEX) as usize,
-                mirrored: t & MIRRORED != 0,
-                fluid: t & FLUID != 0,
-                r,
-                f,
-            })
-    }
-
     /// Number of neighbour entries held.
     pub fn len(&self) -> usize {
         self.tag.len()
