@@ -272,9 +272,9 @@ fn zhao_peak(r: &sph::RunResult) -> (f64, f64) {
 /// measured peak (5150 N at 14.5 ms, about 23 % lower: 3D end effects of the rig) is printed for
 /// context only. Measured with the defaults (Riemann scheme, pair-force section force, tank sized so that
 /// no wall echo returns before t_end) and the 300 Hz filter (peak, time, error against the BEM peak):
-/// * 15 particles over the half-beam: 7052 N at 13.1 ms (+6.0 %);
-/// * 25 particles (this test): 6854 N at 13.5 ms (+3.1 %); tolerance 10 % (the target) and 3 ms;
-/// * 40 particles (`zhao1996_prescribed_fine`): 7170 N at 15.0 ms (+7.8 %); tolerance 10 % and 2 ms.
+/// * 15 particles over the half-beam: 7036 N at 13.1 ms (+5.8 %);
+/// * 25 particles (this test): 6876 N at 13.6 ms (+3.4 %); tolerance 10 % (the target) and 3 ms;
+/// * 40 particles (`zhao1996_prescribed_fine`): 7210 N at 15.1 ms (+8.4 %); tolerance 10 % and 2 ms.
 ///
 /// Before (delta-SPH with artificial viscosity, contour-integrated force, tank 4 b x 3 b): +61 %, +46 %,
 /// +28 % at 15, 25, 40 particles and +1.9 % at 80. Three causes were found: (1) acoustic ringing at the
@@ -284,7 +284,7 @@ fn zhao_peak(r: &sph::RunResult) -> (f64, f64) {
 /// the full extrapolated pressure to contour points that see only a few fluid particles (wetted length
 /// about one dp too long at each spray root), replaced by the sum of the fluid-body pair forces.
 ///
-/// The early force is still high at coarse resolution (+62 % at 2.5 ms, +34 % at 5 ms with 25 particles:
+/// The early force is still high at coarse resolution (+61 % at 2.5 ms, +33 % at 5 ms with 25 particles:
 /// the body meets the water through the kernel support, 2h, before the contours touch); see
 /// [`zhao1996_convergence`].
 #[test]
@@ -336,8 +336,8 @@ fn zhao_mean_error(r: &sph::RunResult, t_max_ms: f64) -> f64 {
 
 /// Convergence in particle spacing on the Zhao prescribed-velocity case: the mean error of the force
 /// against the BEM over the rising phase (2.5-12.5 ms) and over all rows (2.5-25 ms) falls as dp falls.
-/// Measured (rising phase / all rows): 15 particles 35.5 % / 25.0 %, 25 particles 27.3 % / 19.0 %,
-/// 40 particles 20.8 % / 13.1 %. (The filtered peak, +6.0 %, +3.1 %, +7.8 %, is within 10 % at all three
+/// Measured (rising phase / all rows): 15 particles 35.1 % / 24.6 %, 25 particles 26.9 % / 18.6 %,
+/// 40 particles 20.7 % / 11.6 %. (The filtered peak, +5.8 %, +3.4 %, +8.4 %, is within 10 % at all three
 /// levels but not monotone.)
 #[test]
 #[ignore = "three resolutions, about three minutes"]

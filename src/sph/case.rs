@@ -189,6 +189,13 @@ pub struct Overrides {
 /// Whether particle shifting is on unless a case says otherwise.
 pub const DEFAULT_SHIFTING: bool = false;
 
+/// Courant number C of the acoustic time-step limit dt = C h / (c0 + |v|max) unless a case says otherwise
+/// (see [`crate::sph::integrator`]). 0.4 (dt = 0.6 dp / c0 with h = 1.5 dp): against 0.2, the Zhao et al.
+/// (1996) peak force moved by 0.3 %, the sensor peaks by under 1 % of Cp and the drop-test velocities by
+/// under 0.005 m/s, for half the steps; 0.5, the largest a case may ask for, was still stable on the
+/// Zhao case.
+pub const DEFAULT_CFL: f64 = 0.4;
+
 /// Whether the Riemann pair terms are on unless a case says otherwise.
 pub const DEFAULT_RIEMANN: bool = true;
 
@@ -296,7 +303,7 @@ pub fn resolve(
         eos: o.eos.unwrap_or(EosKind::Linear),
         delta: o.delta.unwrap_or(0.1),
         alpha: o.alpha.unwrap_or(0.02),
-        cfl: o.cfl.unwrap_or(0.2),
+        cfl: o.cfl.unwrap_or(DEFAULT_CFL),
         shifting: o.shifting.unwrap_or(DEFAULT_SHIFTING),
         riemann: o.riemann.unwrap_or(DEFAULT_RIEMANN),
         force: o.force.unwrap_or_default(),

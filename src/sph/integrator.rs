@@ -11,8 +11,9 @@
 //! which the continuity pass of the next step (at the same positions) reuses.
 //!
 //! Time step (Monaghan 1992; Antuono et al. 2012): dt = min(C h / (c0 + |v|_max), 0.25 sqrt(h / |a|_max))
-//! with the Courant number C about 0.2. The viscous limit h / (alpha c0) of the artificial viscosity is
-//! far above the acoustic one for alpha < 1 and is not checked.
+//! with the Courant number C 0.4 by default ([`crate::sph::case::DEFAULT_CFL`]; at most 0.5). The viscous
+//! limit h / (alpha c0) of the artificial viscosity is far above the acoustic one for alpha < 1 and is not
+//! checked.
 
 use rayon::prelude::*;
 
