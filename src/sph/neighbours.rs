@@ -246,46 +246,6 @@ impl ListEntry {
     }
 }
 
-/// Particle index of a list tag.
-#[inline(always)]
-pub fn tag_index(t: u32) -> usize {
-    (t & INDEX) as usize
-}
-
-/// Whether a list tag is a mirror image.
-#[inline(always)]
-pub fn tag_mirrored(t: u32) -> bool {
-    t & MIRRORED != 0
-}
-
-/// The tag with the fluid flag set when `fluid`.
-#[inline(always)]
-pub fn with_fluid_flag(t: u32, fluid: bool) -> u32 {
-    t | if fluid { FLUID } else { 0 }
-}
-
-/// r_i - r_j for particle i at (yi, zi) and the neighbour of tag `t` (its mirror image when the tag is
-/// one).
-#[inline(always)]
-pub fn tag_offset(t: u32, yi: f64, zi: f64, y: &[f64], z: &[f64]) -> (f64, f64) {
-    let j = tag_index(t);
-    let dy = if tag_mirrored(t) {
-        yi + y[j]
-    } else {
-        yi - y[j]
-    };
-    (dy, zi - z[j])
-}
-
-/// The entries of the particle whose list is being built: tags (index with the `MIRRORED` bit; the
-/// `FLUID` bit is set by whoever completes them), distances and kernel gradient factors, all of one
-/// length.
-pub struct LastEntries<'a> {
-    pub tag: &'a mut [u32],
-    pub r: &'a mut [f64],
-    pub f: &'a mut [f64],
-}
-
 /// Neighbours of the particles of one chunk, in search order.
 #[derive(Debug, Clone, Default)]
 pub struct ChunkLists {
@@ -311,9 +271,10 @@ impl ChunkLists {
 
     /// Append the neighbours of point (yi, zi) within `support2` (squared support radius), mirror images
     /// included, in the order of [`for_each_neighbour`], leaving out particle `skip` (not its image);
-    /// `fluid(j)` says whether j is fluid and `factor(r)` gives F(r). (The momentum pass does the same
-    /// with [`ChunkLists::push_candidates`] and [`ChunkLists::last_mut`], completing the entries in
-    /// its own pair loop.)
+    /// `fluid(j)` says whether j is fluid and `factor(r)` gives F(r).
+    ///
+    /// The candidates of every cell range are filtered without branches straight into the list (each is
+    /// written and kept by advancing the count); the factors are then computed over the kept ones.
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
     pub fn push_neighbours(
@@ -328,37 +289,8 @@ impl ChunkLists {
         fluid: impl Fn(usize) -> bool,
         factor: impl Fn(f64) -> f64,
     ) {
-        self.push_candidates(grid, y, z, yi, zi, skip, support2);
-        let last = self.last_mut();
-        for (k, t) in last.tag.iter_mut().enumerate() {
-            let (dy, dz) = tag_offset(*t, yi, zi, y, z);
-            let r = (dy * dy + dz * dz).sqrt();
-            last.r[k] = r;
-            last.f[k] = factor(r);
-            *t = with_fluid_flag(*t, fluid(tag_index(*t)));
-        }
-    }
-
-    /// Append the indices (with the `MIRRORED` bit) of the neighbours of point (yi, zi) within
-    /// `support2`, mirror images included, in the order of [`for_each_neighbour`], leaving out particle
-    /// `skip` (not its image). Their distances, kernel factors and fluid flags are still to be set through
-    /// [`ChunkLists::last_mut`].
-    ///
-    /// The candidates of every cell range are filtered without branches straight into the list (each is
-    /// written and kept by advancing the count).
-    #[allow(clippy::too_many_arguments)]
-    #[inline(always)]
-    pub fn push_candidates(
-        &mut self,
-        grid: &Grid,
-        y: &[f64],
-        z: &[f64],
-        yi: f64,
-        zi: f64,
-        skip: usize,
-        support2: f64,
-    ) {
-        let mut n = self.tag.len();
+        let first = self.tag.len();
+        let mut n = first;
         for r in grid.ranges(yi, zi) {
             self.tag.resize(n + r.len(), 0);
             let (ys, zs, out) = (&y[r.clone()], &z[r.clone()], &mut self.tag[..]);
@@ -382,20 +314,20 @@ impl ChunkLists {
             }
         }
         self.tag.truncate(n);
-    }
-
-    /// The entries of the particle being built (since the last [`ChunkLists::end_particle`]), with room
-    /// for their distances and kernel factors.
-    #[inline(always)]
-    pub fn last_mut(&mut self) -> LastEntries<'_> {
-        let first = *self.start.last().expect("lists cleared before use") as usize;
-        let n = self.tag.len();
-        self.r.resize(n, 0.0);
-        self.f.resize(n, 0.0);
-        LastEntries {
-            tag: &mut self.tag[first..],
-            r: &mut self.r[first..],
-            f: &mut self.f[first..],
+        for t in &mut self.tag[first..] {
+            let j = (*t & INDEX) as usize;
+            let dy = if *t & MIRRORED != 0 {
+                yi + y[j]
+            } else {
+                yi - y[j]
+            };
+            let dz = zi - z[j];
+            let r = (dy * dy + dz * dz).sqrt();
+            self.r.push(r);
+            self.f.push(factor(r));
+            if fluid(j) {
+                *t |= FLUID;
+            }
         }
     }
 
@@ -409,6 +341,24 @@ impl ChunkLists {
     #[inline(always)]
     pub fn of(&self, k: usize) -> impl Iterator<Item = ListEntry> + '_ {
         let r = self.start[k] as usize..self.start[k + 1] as usize;
+        self.tag[r.clone()]
+            .iter()
+            .zip(&self.r[r.clone()])
+            .zip(&self.f[r])
+            .map(|((&t, &r), &f)| ListEntry {
+                j: (t & INDEX) as usize,
+                mirrored: t & MIRRORED != 0,
+                fluid: t & FLUID != 0,
+                r,
+                f,
+            })
+    }
+
+    /// The neighbours pushed since the last [`ChunkLists::end_particle`] (the particle being built).
+    #[inline(always)]
+    pub fn of_last(&self) -> impl Iterator<Item = ListEntry> + '_ {
+        let k = self.start.len() - 1;
+        let r = self.start[k] as usize..self.tag.len();
         self.tag[r.clone()]
             .iter()
             .zip(&self.r[r.clone()])

@@ -13,9 +13,7 @@ use rayon::prelude::*;
 use crate::sph::case::Setup;
 use crate::sph::diffusion::antuono2010;
 use crate::sph::kernel::WendlandC2;
-use crate::sph::neighbours::{
-    Grid, LIST_CHUNK, NeighbourLists, tag_index, tag_mirrored, with_fluid_flag,
-};
+use crate::sph::neighbours::{Grid, LIST_CHUNK, NeighbourLists};
 use crate::sph::particles::{Kind, Particles};
 use crate::sph::riemann;
 
@@ -171,35 +169,31 @@ fn momentum_pass<const RIEMANN: bool, const GRAD: bool, const VISCOUS: bool>(
                     }
                     let (yi, zi, vyi, vzi) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i]);
                     let (rho_i, p_i) = (pt.rho[i], pt.p[i]);
-                    // Search first (filling the list with the candidates' tags), then one loop over
-                    // them that completes each entry (distance, kernel factor, fluid flag) and adds its
-                    // terms: the accumulators stay in registers instead of living behind the search
-                    // closure, and the neighbours' positions are read once.
-                    list.push_candidates(grid, pt.y, pt.z, yi, zi, i, kernel.support2());
+                    // Search first (filling the list), then sum over the list: the accumulators stay
+                    // in registers instead of living behind the search closure.
+                    list.push_neighbours(
+                        grid,
+                        pt.y,
+                        pt.z,
+                        yi,
+                        zi,
+                        i,
+                        kernel.support2(),
+                        |j| pt.kind[j] == Kind::Fluid,
+                        |r| kernel.grad_factor(r),
+                    );
                     let (mut ay, mut az, mut vy_acc, mut vz_acc) = (0.0, 0.0, 0.0, 0.0);
                     let mut sums = antuono2010::GradientSums::default();
-                    let last = list.last_mut();
-                    let m = last.tag.len() as u64;
-                    for ((t, r_out), f_out) in last
-                        .tag
-                        .iter_mut()
-                        .zip(last.r.iter_mut())
-                        .zip(last.f.iter_mut())
-                    {
-                        let j = tag_index(*t);
-                        let mirrored = tag_mirrored(*t);
+                    let mut m = 0u64;
+                    for e in list.of_last() {
+                        m += 1;
+                        let (j, r, f, fluid) = (e.j, e.r, e.f, e.fluid);
                         let dz = zi - pt.z[j];
-                        let (dy, vyj) = if mirrored {
+                        let (dy, vyj) = if e.mirrored {
                             (yi + pt.y[j], -pt.vy[j])
                         } else {
                             (yi - pt.y[j], pt.vy[j])
                         };
-                        let r = (dy * dy + dz * dz).sqrt();
-                        let f = kernel.grad_factor(r);
-                        let fluid = pt.kind[j] == Kind::Fluid;
-                        *r_out = r;
-                        *f_out = f;
-                        *t = with_fluid_flag(*t, fluid);
                         let rho_j = pt.rho[j];
                         let fw = f * pt.vol[j];
                         let psum = if RIEMANN {
