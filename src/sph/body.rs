@@ -183,6 +183,21 @@ pub fn dummy_points(section: &Section, dp: f64, layers: usize, y_min: f64) -> Ve
         hash.insert(pts.len(), p);
         pts.push(p);
     };
+    // With a symmetry plane, a column half a spacing off the plane first: with its mirror image it
+    // spaces the dummies dp apart across the plane. Without it the layers of the two sides of a V keel
+    // meet at the plane only through their mirror images, about 1.5 dp apart, a gap a fluid particle
+    // can be squeezed into along the plane.
+    if y_min > 0.0 {
+        let top = section.height();
+        let mut k = 0;
+        while (k as f64 + 0.5) * dp < top {
+            let p = [0.5 * dp, (k as f64 + 0.5) * dp];
+            if distance_to_polyline(&c, p[0], p[1]) <= depth {
+                try_add(p, 0.6 * dp, &mut pts, &mut hash);
+            }
+            k += 1;
+        }
+    }
     for k in 0..layers {
         let d = (k as f64 + 0.5) * dp;
         for w in c.windows(2) {

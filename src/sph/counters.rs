@@ -30,6 +30,9 @@ pub struct Counters {
     pub particle_steps: u64,
     /// Fluid-particle pair interactions evaluated in the momentum pass (within the kernel support).
     pub interactions: u64,
+    /// Fluid particles moved back out of the body by the wall collision
+    /// ([`crate::sph::boundary::kruisbrink2018`]), summed over the run.
+    pub contact_corrections: u64,
 }
 
 impl Counters {

@@ -28,7 +28,7 @@ use rayon::prelude::*;
 use crate::error::{Error, Result};
 use crate::sph::body::{self, ContourPoint, Motion, Section};
 use crate::sph::body_force;
-use crate::sph::boundary::adami2012;
+use crate::sph::boundary::{adami2012, kruisbrink2018};
 use crate::sph::case::{ForceMethod, SensorMethod, Setup};
 use crate::sph::counters::{Counters, Stage};
 use crate::sph::eos::Eos;
@@ -398,6 +398,7 @@ impl Simulation {
             if let Some(a) = self.motion.as_ref().and_then(|m| m.accel_at(t_new)) {
                 self.body.a_down = a;
             }
+            self.collide_with_body(v_half)?;
         }
         self.time = t_new;
         self.counters.add(Stage::Integrate, t0.elapsed());
@@ -420,9 +421,6 @@ impl Simulation {
         self.counters.steps += 1;
         self.counters.particle_steps += self.pt.len() as u64;
         self.record();
-        if self.steps % 20 == 0 {
-            self.check_body_penetration()?;
-        }
         Ok(())
     }
 
@@ -474,36 +472,33 @@ impl Simulation {
         )
     }
 
-    /// Fail when fluid particles have gone through the body (deeper than two particle spacings inside).
-    fn check_body_penetration(&self) -> std::result::Result<(), String> {
+    /// Wall collision with the body after the drift ([`kruisbrink2018`]): fluid particles inside the
+    /// contour are put back outside. One found deeper than two particle spacings inside is a blow-up, and
+    /// the run stops with where it happened.
+    fn collide_with_body(&mut self, v_down: f64) -> std::result::Result<(), String> {
         let Some(sec) = &self.section else {
             return Ok(());
         };
         let dp = self.setup.dp;
-        let zk = self.body.z_keel;
-        let (hb, ht) = (sec.half_breadth(), sec.height());
-        let contour = &self.closed_contour;
-        let (count, deepest) = (0..self.pt.len())
-            .into_par_iter()
-            .with_min_len(4096)
-            .map(|i| {
-                if self.pt.kind[i] != Kind::Fluid {
-                    return (0u64, 0.0);
-                }
-                let (y, z) = (self.pt.y[i], self.pt.z[i] - zk);
-                if y.abs() > hb || z < 0.0 || z > ht || !sec.contains(y, z) {
-                    return (0, 0.0);
-                }
-                let d = body::distance_to_polyline(contour, y, z);
-                if d > 2.0 * dp { (1, d) } else { (0, 0.0) }
-            })
-            .reduce(|| (0, 0.0), |a, b| (a.0 + b.0, a.1.max(b.1)));
-        if count > 0 {
+        let c = kruisbrink2018::resolve(
+            &mut self.pt,
+            sec,
+            &self.closed_contour,
+            self.body.z_keel,
+            v_down,
+            dp,
+            self.setup.mirror,
+        );
+        self.counters.contact_corrections += c.corrected;
+        if c.deepest > 2.0 * dp {
             return Err(format!(
-                "{count} fluid particle(s) went through the body surface at t = {:.6} s (deepest {:.2} mm \
-                 inside, particle spacing {:.2} mm); try a finer resolution or a smaller Courant number",
+                "a fluid particle went {:.2} mm through the body surface in one step at t = {:.6} s, at \
+                 (y, z) = ({:.4}, {:.4}) m above the keel (particle spacing {:.2} mm): the flow has blown \
+                 up there",
+                c.deepest * 1e3,
                 self.time,
-                deepest * 1e3,
+                c.deepest_at[0],
+                c.deepest_at[1],
                 dp * 1e3
             ));
         }
