@@ -125,7 +125,7 @@ mod tests {
         let closed = sec.closed_contour();
         let zk = -0.1;
         // Body frame (0.1, 0.08) is inside (the side is at z = 0.1 tan 30 = 0.0577).
-        let mut pt = one_fluid(0.1, 0.08 + zk, 0.0, -3.0);
+        let mut pt = one_fluid(0.1, 0.08 + zk, 0.0, 3.0);
         let c = resolve(&mut pt, &sec, &closed, zk, 1.0, 0.01, true);
         assert_eq!(c.corrected, 1);
         let (y, zb) = (pt.y[0], pt.z[0] - zk);
