@@ -25,6 +25,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
 
+use crate::sph::automatic;
 use crate::sph::body::{Motion, Section};
 use crate::sph::eos::EosKind;
 use crate::sph::sensors::SensorSpec;
@@ -141,6 +142,10 @@ pub struct Setup {
     pub tank_half_width: f64,
     pub tank_depth: f64,
     pub tank_wall_height: f64,
+    /// Thickness of the absorbing layer along the side walls and the bottom (m; 0 for none), inside
+    /// the tank dimensions above ([`crate::sph::damping_zone`]).
+    #[serde(default)]
+    pub damping_zone: f64,
     /// Half domain with a symmetry plane at y = 0.
     pub mirror: bool,
     pub t_end: f64,
@@ -180,6 +185,7 @@ pub struct Overrides {
     pub tank_half_width: Option<f64>,
     pub tank_depth: Option<f64>,
     pub tank_wall_height: Option<f64>,
+    pub damping_zone: Option<f64>,
     pub mirror: Option<bool>,
     pub t_end: Option<f64>,
     pub snapshot_interval: Option<f64>,
@@ -196,13 +202,12 @@ pub const DEFAULT_SHIFTING: bool = false;
 /// Zhao case.
 pub const DEFAULT_CFL: f64 = 0.4;
 
+/// Largest Mach number V / c0 of the body speed that weakly compressible SPH is given: the density
+/// variation of the flow, of order Ma^2 / 2, stays below half a per cent.
+pub const MAX_MACH: f64 = 0.1;
+
 /// Whether the Riemann pair terms are on unless a case says otherwise.
 pub const DEFAULT_RIEMANN: bool = true;
-
-/// Wagner's peak pressure coefficient (pi^2/4) cot^2(beta), used only to choose the sound speed.
-fn wagner_cp(beta: f64) -> f64 {
-    crate::analytic::wagner::peak_pressure_coefficient(beta)
-}
 
 /// Resolve a case: fill every automatic choice not overridden, and record how.
 pub fn resolve(
@@ -215,13 +220,6 @@ pub fn resolve(
     let built = motion.build()?;
     let mut notes = Vec::new();
     let b = section.half_breadth();
-    // Depth of the chine: z of the first point of largest half-breadth.
-    let z_chine = section
-        .half_points()
-        .iter()
-        .find(|p| p[0] >= b * (1.0 - 1e-9))
-        .map_or(section.height(), |p| p[1]);
-    let depth_end = z_chine.min(0.9 * section.height()).max(1e-6);
     let n_half = o
         .particles_per_half_beam
         .unwrap_or(o.level.unwrap_or(Level::Coarse).particles_per_half_beam());
@@ -244,32 +242,33 @@ pub fn resolve(
             t
         }
         None => {
-            let t = time_to_depth(&built, depth_end);
-            notes.push(format!(
-                "t_end = {t:.5} s: keel {depth_end:.4} m below the calm water (chine depth, at most 0.9 x height)"
-            ));
-            t
+            let c = automatic::end_time(section, &built);
+            notes.push(c.note);
+            c.value
         }
     };
     let g = 9.81;
-    // Sound speed for the impact (before the tank is known; the hydrostatic bound below is checked
-    // against the tank chosen from it).
-    let c_impact = o.c0.unwrap_or_else(|| {
-        let beta = section.min_deadrise_below(z_chine).max(10f64.to_radians());
-        built.max_speed(t_end) * (wagner_cp(beta) / 0.02).sqrt()
-    });
-    // A pressure wave sent out by the impact at t = 0 must not come back from the tank walls before
-    // the end of the run (design/physics.md, section 3): walls at least c0 t_end / 2 away.
-    let echo = 0.5 * c_impact * t_end;
-    let tank_half_width = o.tank_half_width.unwrap_or((4.0 * b).max(echo));
-    let tank_depth = o.tank_depth.unwrap_or((3.0 * b).max(echo));
+    let keel_depth_end = keel_depth(&built, t_end);
+    let (auto_w, auto_d, auto_layer, tank_note) = automatic::tank(section, keel_depth_end);
+    let tank_given = o.tank_half_width.is_some() || o.tank_depth.is_some();
+    let tank_half_width = o.tank_half_width.unwrap_or(auto_w);
+    let tank_depth = o.tank_depth.unwrap_or(auto_d);
     let tank_wall_height = o.tank_wall_height.unwrap_or(0.25 * tank_depth);
-    if o.tank_half_width.is_none() || o.tank_depth.is_none() {
+    // An absorbing layer comes with the automatic tank; a tank given by the user (an experiment's, say)
+    // has reflecting walls unless a layer is asked for too.
+    let damping_zone = o
+        .damping_zone
+        .unwrap_or(if tank_given { 0.0 } else { auto_layer });
+    if tank_given {
         notes.push(format!(
-            "tank half-width {tank_half_width:.3} m and depth {tank_depth:.3} m (unless given: at least 4 b \
-             and 3 b, and at least c0 t_end / 2 = {echo:.3} m so that no wall echo of the impact reaches the \
-             body before t_end)"
+            "tank half-width {tank_half_width:.3} m and depth {tank_depth:.3} m (given in part or whole; \
+             absorbing layer {damping_zone:.3} m)"
         ));
+    } else {
+        notes.push(tank_note);
+    }
+    if o.damping_zone.is_some() {
+        notes.push(format!("absorbing layer {damping_zone} m thick (given)"));
     }
     let c0 = match o.c0 {
         Some(c) => {
@@ -277,18 +276,19 @@ pub fn resolve(
             c
         }
         None => {
-            let v = built.max_speed(t_end);
-            let beta = section.min_deadrise_below(z_chine).max(10f64.to_radians());
-            let cp = wagner_cp(beta);
-            let c_imp = v * (cp / 0.02).sqrt();
-            let c_hyd = 10.0 * (g * tank_depth).sqrt();
-            let c = c_imp.max(c_hyd);
-            notes.push(format!(
-                "c0 = max(V sqrt(Cp/0.02), 10 sqrt(g D)) = max({v:.3} x sqrt({cp:.3}/0.02), {c_hyd:.2}) = {c:.2} m/s \
-                 (Cp Wagner at deadrise {:.1} deg)",
-                beta.to_degrees()
-            ));
-            c
+            let c = automatic::sound_speed(section, built.max_speed(t_end), g, tank_depth);
+            notes.push(c.note);
+            if c.value > automatic::MAX_C0 {
+                return Err(Error::Invalid(format!(
+                    "the automatic sound speed would be {:.0} m/s, above the real sound speed of water \
+                     ({} m/s): an entry at {:.1} m/s is outside weakly compressible SPH (its acoustic phase is \
+                     real physics there)",
+                    c.value,
+                    automatic::MAX_C0,
+                    built.max_speed(t_end)
+                )));
+            }
+            c.value
         }
     };
     let setup = Setup {
@@ -311,6 +311,7 @@ pub fn resolve(
         tank_half_width,
         tank_depth,
         tank_wall_height,
+        damping_zone,
         mirror: o.mirror.unwrap_or(true),
         t_end,
         sensors,
@@ -371,32 +372,54 @@ pub fn check(s: &Setup) -> Result<()> {
     // Weak compressibility needs the sound speed well above the flow speed; at or above it the
     // "incompressible" water is hit supersonically and the results mean nothing.
     if let Some(m) = &s.motion {
-        let v = m.build()?.max_speed(s.t_end);
-        if v >= s.c0 {
+        let built = m.build()?;
+        let v = built.max_speed(s.t_end);
+        if v > MAX_MACH * s.c0 {
             return Err(Error::Invalid(format!(
-                "sound speed c0 = {} m/s is not above the body speed {v} m/s: weakly compressible SPH needs \
-                 c0 well above the flow speed (the automatic choice gives about 20 times the entry speed \
-                 at 30 deg deadrise)",
-                s.c0
+                "sound speed c0 = {} m/s is not well above the body speed {v} m/s (Mach number {:.3}, at most \
+                 {MAX_MACH}): weakly compressible SPH needs c0 at least 10 times the flow speed (the automatic \
+                 choice gives about 20 times the entry speed at 30 deg deadrise)",
+                s.c0,
+                v / s.c0
             )));
         }
+        if let Some(p) = &s.section_points
+            && !matches!(m, MotionSpec::FreeHeave { .. })
+        {
+            let height = p.iter().map(|q| q[1]).fold(f64::NEG_INFINITY, f64::max)
+                - p.iter().map(|q| q[1]).fold(f64::INFINITY, f64::min);
+            let depth = keel_depth(&built, s.t_end);
+            if depth > height {
+                return Err(Error::Invalid(format!(
+                    "t_end = {} s takes the keel {depth:.3} m deep, more than the section's height ({height:.3} m): \
+                     the whole section would be under water, long after the impact is over (leave t_end out for \
+                     the automatic end of the impact)",
+                    s.t_end
+                )));
+            }
+        }
+    }
+    if !(s.damping_zone >= 0.0 && s.damping_zone < s.tank_half_width.min(s.tank_depth)) {
+        return Err(Error::Invalid(format!(
+            "the absorbing layer must be at least 0 m and thinner than the tank's half-width and depth, got {} m",
+            s.damping_zone
+        )));
     }
     Ok(())
 }
 
-/// Time for the keel to reach `depth` below the surface.
-fn time_to_depth(m: &Motion, depth: f64) -> f64 {
+/// Depth of the keel below the calm surface at time `t` (the free-fall estimate for a free drop: the
+/// initial speed held).
+fn keel_depth(m: &Motion, t: f64) -> f64 {
     match m {
-        Motion::Constant { speed } => depth / speed.max(1e-9),
-        Motion::FreeHeave { speed0, .. } => 1.3 * depth / speed0.max(1e-9),
+        Motion::FreeHeave { speed0, .. } => speed0 * t,
         _ => {
-            let (mut t, mut z) = (0.0, 0.0);
-            let dt = 1e-5;
-            while z < depth && t < 10.0 {
-                z += dt * m.speed_at(t + 0.5 * dt).unwrap_or(0.0);
-                t += dt;
-            }
-            t
+            let n = 2000;
+            let dt = t / n as f64;
+            (0..n)
+                .map(|k| dt * m.speed_at((k as f64 + 0.5) * dt).unwrap_or(0.0))
+                .sum::<f64>()
+                .max(0.0)
         }
     }
 }

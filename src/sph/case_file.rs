@@ -96,6 +96,8 @@ struct TankFile {
     half_width_m: Option<Spanned<f64>>,
     depth_m: Option<Spanned<f64>>,
     wall_height_m: Option<Spanned<f64>>,
+    /// Thickness of the absorbing layer along the walls and bottom (0 for none).
+    damping_zone_m: Option<Spanned<f64>>,
 }
 
 #[derive(Debug, Default, Deserialize)]
@@ -254,6 +256,10 @@ pub fn from_source(src: &SourceText) -> Result<Setup> {
         tank_half_width: opt(&f.tank.half_width_m, "half_width_m")?,
         tank_depth: opt(&f.tank.depth_m, "depth_m")?,
         tank_wall_height: opt(&f.tank.wall_height_m, "wall_height_m")?,
+        damping_zone: match &f.tank.damping_zone_m {
+            Some(v) => Some(crate::input::in_range(src, v, 0.0, 1e3, "damping_zone_m")?),
+            None => None,
+        },
         mirror: f.numerics.mirror,
         t_end: opt(&f.run.t_end_s, "t_end_s")?,
         snapshot_interval: opt(&f.run.snapshot_interval_s, "snapshot_interval_s")?,

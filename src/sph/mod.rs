@@ -6,12 +6,14 @@
 //! (initial particles) -> [`solver`] (time loop: [`neighbours`], [`boundary`], [`diffusion`],
 //! [`integrator`]) -> [`sensors`] (histories) -> [`output`] (files) and [`crate::loads`] (peaks).
 
+pub mod automatic;
 pub mod body;
 pub mod body_force;
 pub mod boundary;
 pub mod case;
 pub mod case_file;
 pub mod counters;
+pub mod damping_zone;
 pub mod diffusion;
 pub mod eos;
 pub mod integrator;

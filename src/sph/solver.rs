@@ -31,6 +31,7 @@ use crate::sph::body_force;
 use crate::sph::boundary::{adami2012, kruisbrink2018};
 use crate::sph::case::{ForceMethod, SensorMethod, Setup};
 use crate::sph::counters::{Counters, Stage};
+use crate::sph::damping_zone::DampingZone;
 use crate::sph::eos::Eos;
 use crate::sph::integrator;
 use crate::sph::kernel::WendlandC2;
@@ -88,6 +89,8 @@ pub struct Simulation {
     /// Partial sums of the body forces (reused every step).
     force_scratch: body_force::ForceScratch,
     shifting: Shifting,
+    /// The absorbing layer along the tank walls and bottom.
+    damping: DampingZone,
     pub body: BodyState,
     pub time: f64,
     pub dt: f64,
@@ -171,6 +174,7 @@ impl Simulation {
             sensors,
             force_scratch: body_force::ForceScratch::default(),
             shifting: Shifting::default(),
+            damping: DampingZone::new(tank.half_width, tank.depth, setup.damping_zone, setup.c0),
             body,
             time: 0.0,
             dt: 0.0,
@@ -391,6 +395,8 @@ impl Simulation {
         if self.setup.shifting {
             self.shifting.apply(&mut self.pt, self.setup.mirror);
         }
+        self.damping
+            .apply(&mut self.pt, dt, &self.eos, self.setup.g);
         self.lists_fresh = false;
         if self.motion.is_some() {
             self.body.z_keel -= dt * v_half;

@@ -1,0 +1,165 @@
+//! The automatic choices of a water-entry run that follow from the section and its motion: when the
+//! impact is over (the end time), how large the tank must be, and the sound speed. Each returns its
+//! value with a note that says how it was chosen; [`crate::sph::case::resolve`] records the notes.
+
+use crate::analytic::generalised_wagner::penetration_for_half_width;
+use crate::sph::body::{Motion, Section};
+
+/// Margin on the time at which Wagner's wetted half-width reaches the widest point of the section, so
+/// that the run sees the section force pass its maximum there (Wagner's force peaks when the wetting
+/// reaches the chine or the deck edge and falls once the flow separates).
+pub const END_MARGIN: f64 = 1.2;
+
+/// Water depth under the keel's deepest position and clear width beside the widest point, in
+/// half-breadths b, of the undamped part of an automatic tank; and the thickness of its absorbing layer.
+pub const CLEAR_DEPTH_B: f64 = 3.0;
+pub const CLEAR_WIDTH_B: f64 = 5.0;
+pub const DAMPING_B: f64 = 1.5;
+
+/// Largest sound speed an automatic choice may make: the real sound speed of water. A run that would
+/// need more is an impact whose acoustic phase is real physics, outside weakly compressible SPH.
+pub const MAX_C0: f64 = 1480.0;
+
+/// The density variation delta allowed at the expected peak pressure, rho0 c0^2 delta = Cp rho0 V^2 / 2.
+pub const DENSITY_VARIATION: f64 = 0.01;
+
+/// A chosen value and how it was chosen.
+#[derive(Debug, Clone)]
+pub struct Choice {
+    pub value: f64,
+    pub note: String,
+}
+
+/// Penetration at which the wetted contour, by Wagner's condition for the actual shape, reaches the
+/// widest point of the section (the chine, a knuckle into a vertical side, or the deck edge of a flared
+/// section); `None` when the condition cannot be solved for this shape.
+pub fn wetting_penetration(section: &Section) -> Option<f64> {
+    let b = section.half_breadth();
+    let d = penetration_for_half_width(section.half_points(), b * (1.0 - 1e-9))?;
+    (d.is_finite() && d > 0.0).then_some(d)
+}
+
+/// Time at which the keel reaches `depth` below the calm surface, and the first time the downward speed
+/// falls to zero (the relative motion reverses), whichever comes first; `None` when neither happens
+/// within `t_max`.
+pub fn time_to_depth(m: &Motion, depth: f64, t_max: f64) -> Option<(f64, bool)> {
+    match m {
+        Motion::Constant { speed } => {
+            let t = depth / speed;
+            (t <= t_max).then_some((t, false))
+        }
+        Motion::FreeHeave { speed0, .. } => Some((1.3 * depth / speed0, false)),
+        _ => {
+            let n = 20_000;
+            let dt = t_max / n as f64;
+            let mut z = 0.0;
+            for k in 0..n {
+                let t = k as f64 * dt;
+                let v = m.speed_at(t + 0.5 * dt).unwrap_or(0.0);
+                if v <= 0.0 && t > 0.0 {
+                    return Some((t, true));
+                }
+                z += dt * v;
+                if z >= depth {
+                    return Some((t + dt, false));
+                }
+            }
+            None
+        }
+    }
+}
+
+/// End time: the impact is over when Wagner's wetted contour has reached the widest point of the
+/// section and the force has passed its maximum there ([`END_MARGIN`] times the wetting time), or when
+/// the entry velocity has fallen to zero, whichever comes first; never past the keel reaching 0.9 of
+/// the section height (the deck would go under).
+pub fn end_time(section: &Section, m: &Motion) -> Choice {
+    let h = section.height();
+    let t_max = 60.0;
+    let deck = time_to_depth(m, 0.9 * h, t_max);
+    let wet = wetting_penetration(section).and_then(|d| time_to_depth(m, d, t_max));
+    match (wet, deck) {
+        (Some((t, true)), _) => Choice {
+            value: t,
+            note: format!(
+                "t_end = {t:.5} s: the entry velocity falls to zero before the wetting reaches the widest point"
+            ),
+        },
+        (Some((t, false)), deck) => {
+            let tm = END_MARGIN * t;
+            let cap = deck.map_or(f64::INFINITY, |d| d.0);
+            let rev = time_to_depth(m, f64::INFINITY, tm.min(t_max))
+                .filter(|r| r.1)
+                .map_or(f64::INFINITY, |r| r.0);
+            let value = tm.min(cap).min(rev);
+            Choice {
+                value,
+                note: format!(
+                    "t_end = {value:.5} s: {END_MARGIN} x the time ({t:.5} s) at which Wagner's wetted half-width \
+                     reaches the widest point of the section, so that the force passes its maximum (at most \
+                     until the entry velocity reverses or the keel is 0.9 x the height deep)"
+                ),
+            }
+        }
+        (None, Some((t, rev))) => Choice {
+            value: t,
+            note: if rev {
+                format!("t_end = {t:.5} s: the entry velocity falls to zero")
+            } else {
+                format!(
+                    "t_end = {t:.5} s: keel 0.9 x the section height deep (Wagner's wetting condition has no \
+                     solution for this shape)"
+                )
+            },
+        },
+        (None, None) => Choice {
+            value: t_max,
+            note: format!("t_end = {t_max} s: the keel never reaches the deck within that time"),
+        },
+    }
+}
+
+/// Tank of an automatic case: [`CLEAR_WIDTH_B`] b of water beside the widest point and
+/// [`CLEAR_DEPTH_B`] b under the keel's deepest position, plus an absorbing layer [`DAMPING_B`] b
+/// thick along the walls and the bottom. Returns (half-width, depth, layer thickness, note).
+pub fn tank(section: &Section, keel_depth_end: f64) -> (f64, f64, f64, String) {
+    let b = section.half_breadth();
+    let layer = DAMPING_B * b;
+    let half_width = b + CLEAR_WIDTH_B * b + layer;
+    let depth = keel_depth_end + CLEAR_DEPTH_B * b + layer;
+    let note = format!(
+        "tank half-width {half_width:.3} m and depth {depth:.3} m: {CLEAR_WIDTH_B} b of water beside the widest \
+         point and {CLEAR_DEPTH_B} b under the keel's deepest position ({keel_depth_end:.3} m), plus an \
+         absorbing layer {layer:.3} m ({DAMPING_B} b) thick along the walls and the bottom that takes up the \
+         impact's pressure wave (b = {b:.4} m)"
+    );
+    (half_width, depth, layer, note)
+}
+
+/// Sound speed: the largest of V sqrt(Cp / (2 delta)) (density variation delta = 1 % at Wagner's peak pressure
+/// coefficient Cp = (pi^2/4) cot^2(beta), beta the smallest deadrise below the widest point, not below
+/// 10 deg), 10 V (Mach number at most 0.1) and 10 sqrt(g D) (hydrostatic pressure at the tank bottom
+/// within 1 % of rho0 c0^2). The tank depth D is the one the run uses.
+pub fn sound_speed(section: &Section, v_max: f64, g: f64, tank_depth: f64) -> Choice {
+    let b = section.half_breadth();
+    let z_chine = section
+        .half_points()
+        .iter()
+        .find(|p| p[0] >= b * (1.0 - 1e-9))
+        .map_or(section.height(), |p| p[1]);
+    let beta = section.min_deadrise_below(z_chine).max(10f64.to_radians());
+    let cp = crate::analytic::wagner::peak_pressure_coefficient(beta);
+    let c_imp = v_max * (cp / (2.0 * DENSITY_VARIATION)).sqrt();
+    let c_mach = 10.0 * v_max;
+    let c_hyd = 10.0 * (g * tank_depth).sqrt();
+    let value = c_imp.max(c_mach).max(c_hyd);
+    Choice {
+        value,
+        note: format!(
+            "c0 = max(V sqrt(Cp / (2 x {DENSITY_VARIATION})), 10 V, 10 sqrt(g D)) = max({c_imp:.2}, {c_mach:.2}, {c_hyd:.2}) \
+             = {value:.2} m/s (V = {v_max:.3} m/s, Cp Wagner {cp:.3} at deadrise {:.1} deg, D = {tank_depth:.3} m, \
+             the depth of the tank the run uses)",
+            beta.to_degrees()
+        ),
+    }
+}
