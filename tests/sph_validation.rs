@@ -61,6 +61,7 @@ fn still_tank(dp: f64) -> Setup {
         tank_half_width: 0.15,
         tank_depth: 0.2,
         tank_wall_height: 0.05,
+        damping_zone: 0.0,
         mirror: true,
         t_end: 3.0,
         sensors: Vec::new(),

@@ -75,6 +75,9 @@ pub struct Common {
     /// Print the run summary as JSON on stdout.
     #[arg(long)]
     json: bool,
+    /// Run even when the estimated wall time exceeds the one-hour bound.
+    #[arg(long)]
+    force: bool,
 }
 
 #[derive(Debug, Args)]
@@ -247,25 +250,31 @@ fn go(mut setup: sph::Setup, c: &Common, name: &str) -> slamtool::Result<()> {
     if c.frames > 0 && setup.snapshot_interval.is_none() {
         setup.snapshot_interval = Some(setup.t_end / c.frames as f64);
     }
-    let n_fluid_est = setup.tank_half_width * setup.tank_depth / (setup.dp * setup.dp)
-        * if setup.mirror { 1.0 } else { 2.0 };
+    let plan = sph::StudyPlan {
+        levels: c.convergence_levels as usize,
+        ..Default::default()
+    };
+    let cost = sph::cost::estimate(&setup, plan, rayon::current_num_threads());
     eprintln!(
-        "{name}: dp {:.2} mm, c0 {:.1} m/s, ~{:.0} fluid particles, t_end {:.2} ms, {} thread(s)",
+        "{name}: dp {:.2} mm, c0 {:.1} m/s, t_end {:.2} ms; {}",
         setup.dp * 1e3,
         setup.c0,
-        n_fluid_est,
         setup.t_end * 1e3,
-        rayon::current_num_threads()
+        cost.describe()
     );
+    sph::cost::check(&cost, c.force)?;
+    let cleared = sph::output_dir::prepare(&out)?;
+    if cleared > 0 {
+        eprintln!(
+            "removed {cleared} output(s) of an earlier run from {}",
+            out.display()
+        );
+    }
     let opts = RunOptions {
         out_dir: Some(out.clone()),
         progress: true,
         vtk: c.frames > 0,
         png: c.frames > 0,
-    };
-    let plan = sph::StudyPlan {
-        levels: c.convergence_levels as usize,
-        ..Default::default()
     };
     let RunResult { summary, .. } = sph::run_with_convergence(setup, &opts, plan)?;
     for w in &summary.warnings {
@@ -315,13 +324,32 @@ fn go(mut setup: sph::Setup, c: &Common, name: &str) -> slamtool::Result<()> {
         summary.peak_contour_pressure_s_m * 1e3
     );
     for s in &summary.sensors {
+        let span = s
+            .integration_span_m
+            .filter(|sp| s.width_m.is_some_and(|w| sp[1] - sp[0] > w * (1.0 + 1e-9)))
+            .map_or(String::new(), |sp| {
+                format!(" (integrated over {:.1} mm)", (sp[1] - sp[0]) * 1e3)
+            });
         println!(
-            "  sensor {:8} {:.1} kPa at {:.3} ms",
+            "  sensor {:8} {:.1} kPa at {:.3} ms{span}",
             s.name,
             s.summary.raw.value * 1e-3,
             s.summary.raw.time * 1e3
         );
     }
+    println!(
+        "contact transient (keel less than {} dp deep, up to {:.3} ms; acoustic, not a slamming load): \
+         contour pressure up to {:.1} kPa at {:.3} ms, force up to {:.1} N/m",
+        sph::CONTACT_TRANSIENT_DP,
+        summary.contact_transient_end_s * 1e3,
+        summary.contact_transient_pressure_pa * 1e-3,
+        summary.contact_transient_pressure_time_s * 1e3,
+        summary
+            .force
+            .summary
+            .contact_transient
+            .map_or(0.0, |p| p.value)
+    );
     if let (Some(wf), Some(wt), Some(wp)) = (
         summary.wagner_peak_force_n_per_m,
         summary.wagner_peak_force_time_s,

@@ -42,10 +42,78 @@ pub fn peak(t: &[f64], x: &[f64]) -> Peak {
 /// Raw and filtered peaks of one history.
 #[derive(Debug, Clone, Serialize)]
 pub struct Summary {
+    /// The peak after the contact transient (the whole record when there is none); the impulse is over
+    /// the whole record.
     pub raw: Peak,
-    /// After the zero-phase low-pass filter (on a uniform resampling of the record).
+    /// After the zero-phase low-pass filter (on a uniform resampling of the record), after the contact
+    /// transient.
     pub filtered: Option<Peak>,
     pub filter: Option<LowPass>,
+    /// The largest raw value during the contact transient, kept apart from the peak: at first contact
+    /// a weakly compressible fluid carries an acoustic pressure of order rho c0 V over the first few
+    /// particle spacings of penetration, the same at every resolution, which is not the slamming load.
+    pub contact_transient: Option<Peak>,
+    /// Whether the peak is the first sample after the contact transient: the record was still falling
+    /// from the transient, so the value is its tail rather than a hydrodynamic peak.
+    pub at_transient_end: bool,
+    /// Whether the peak is the last sample of the record: the quantity was still rising when the run
+    /// ended (a steady or hydrostatic load growing with the immersion), so the value is no impact peak.
+    pub at_record_end: bool,
+}
+
+/// Peak of (t, x) over the samples with t >= t0, with the impulse over the whole record; the index of
+/// the peak sample.
+fn peak_from(t: &[f64], x: &[f64], t0: f64) -> (Peak, Option<usize>) {
+    let k0 = t.partition_point(|&ti| ti < t0);
+    let mut best: Option<usize> = None;
+    for k in k0..t.len().min(x.len()) {
+        if best.is_none_or(|b| x[k] > x[b]) {
+            best = Some(k);
+        }
+    }
+    let p = match best {
+        Some(k) => Peak {
+            value: x[k],
+            time: t[k],
+            impulse: trapezoid(t, x),
+        },
+        None => Peak {
+            value: 0.0,
+            time: 0.0,
+            impulse: trapezoid(t, x),
+        },
+    };
+    (p, best.map(|b| b - k0))
+}
+
+/// Summarise a history whose first part, t < `transient_end`, is the contact transient: the peaks are
+/// taken after it, and the transient's own largest value is kept apart (see [`Summary`]).
+pub fn summarise_after(
+    t: &[f64],
+    x: &[f64],
+    cutoff_hz: Option<f64>,
+    transient_end: f64,
+) -> crate::error::Result<Summary> {
+    let mut s = summarise(t, x, cutoff_hz)?;
+    if transient_end <= t.first().copied().unwrap_or(0.0) {
+        return Ok(s);
+    }
+    let (raw, k) = peak_from(t, x, transient_end);
+    let k0 = t.partition_point(|&ti| ti < transient_end);
+    s.contact_transient = (k0 > 0).then(|| peak(&t[..k0], &x[..k0]));
+    if let Some(tr) = &mut s.contact_transient {
+        tr.impulse = trapezoid(&t[..k0], &x[..k0]);
+    }
+    s.at_transient_end = k == Some(0) && k0 + 1 < t.len();
+    s.at_record_end = k.is_some_and(|k| k0 + k + 1 == t.len().min(x.len())) && k != Some(0);
+    s.raw = raw;
+    if let (Some(f), Some(lp)) = (&mut s.filtered, &s.filter) {
+        let dt = 1.0 / lp.sample_hz;
+        let (tu, xu) = resample_uniform(t, x, dt);
+        let y = lp.filtfilt(&xu);
+        *f = peak_from(&tu, &y, transient_end).0;
+    }
+    Ok(s)
 }
 
 /// Summarise a history: raw peak, and the filtered one when a cut-off is given. The record is resampled
@@ -57,6 +125,9 @@ pub fn summarise(t: &[f64], x: &[f64], cutoff_hz: Option<f64>) -> crate::error::
             raw,
             filtered: None,
             filter: None,
+            contact_transient: None,
+            at_transient_end: false,
+            at_record_end: false,
         });
     };
     if t.len() < 4 {
@@ -64,6 +135,9 @@ pub fn summarise(t: &[f64], x: &[f64], cutoff_hz: Option<f64>) -> crate::error::
             raw,
             filtered: None,
             filter: None,
+            contact_transient: None,
+            at_transient_end: false,
+            at_record_end: false,
         });
     }
     let dt = (t[t.len() - 1] - t[0]) / (t.len() - 1) as f64;
@@ -74,6 +148,9 @@ pub fn summarise(t: &[f64], x: &[f64], cutoff_hz: Option<f64>) -> crate::error::
         raw,
         filtered: Some(peak(&tu, &y)),
         filter: Some(f),
+        contact_transient: None,
+        at_transient_end: false,
+        at_record_end: false,
     })
 }
 

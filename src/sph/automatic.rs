@@ -3,7 +3,8 @@
 //! value with a note that says how it was chosen; [`crate::sph::case::resolve`] records the notes.
 
 use crate::analytic::generalised_wagner::penetration_for_half_width;
-use crate::sph::body::{Motion, Section};
+use crate::sph::body::{Motion, Section, half_contour_length, point_at_arc};
+use crate::sph::sensors::SensorSpec;
 
 /// Margin on the time at which Wagner's wetted half-width reaches the widest point of the section, so
 /// that the run sees the section force pass its maximum there (Wagner's force peaks when the wetting
@@ -30,12 +31,60 @@ pub struct Choice {
     pub note: String,
 }
 
-/// Penetration at which the wetted contour, by Wagner's condition for the actual shape, reaches the
-/// widest point of the section (the chine, a knuckle into a vertical side, or the deck edge of a flared
-/// section); `None` when the condition cannot be solved for this shape.
-pub fn wetting_penetration(section: &Section) -> Option<f64> {
+/// Local deadrise (deg) from which a contour segment counts as a side rather than a bottom: the
+/// wetting that reaches it has run through the bottom's impact, and the flow separates or runs up the
+/// side without a new slam (a chine, a knuckle into a near-vertical side, the turn of a bilge).
+pub const SIDE_DEADRISE_DEG: f64 = 75.0;
+
+/// How far the wetting must go for the impact to be over: the half-breadth of the first point from the
+/// keel where the contour turns into a side ([`SIDE_DEADRISE_DEG`]), or the widest point when there is
+/// none (a flared bow), and in any case past the upper edge of the highest sensor (a flare panel above a
+/// knuckle). Returns the half-breadth and what it is.
+pub fn wetting_target(section: &Section, sensors: &[SensorSpec]) -> (f64, String) {
+    let half = section.half_points();
     let b = section.half_breadth();
-    let d = penetration_for_half_width(section.half_points(), b * (1.0 - 1e-9))?;
+    let steep = SIDE_DEADRISE_DEG.to_radians();
+    let mut widest = 0.0f64;
+    let mut target = (b, format!("the widest point (half-breadth {b:.4} m)"));
+    for w in half.windows(2) {
+        widest = widest.max(w[0][0]);
+        let (dy, dz) = (w[1][0] - w[0][0], w[1][1] - w[0][1]);
+        if dz > 0.0 && dz.atan2(dy.abs()) >= steep && widest > 0.0 {
+            target = (
+                widest,
+                format!(
+                    "the chine, where the contour turns into a side steeper than {SIDE_DEADRISE_DEG} deg (half-breadth \
+                     {widest:.4} m, {:.4} m above the keel)",
+                    w[0][1]
+                ),
+            );
+            break;
+        }
+    }
+    let top = sensors
+        .iter()
+        .filter_map(|s| {
+            point_at_arc(
+                section,
+                (s.s_m + 0.5 * s.width_m).min(half_contour_length(section)),
+            )
+        })
+        .map(|p| p[0])
+        .fold(0.0, f64::max);
+    if top > target.0 {
+        let y = top.min(b);
+        target = (
+            y,
+            format!("the upper edge of the highest sensor (half-breadth {y:.4} m)"),
+        );
+    }
+    target
+}
+
+/// Penetration at which the wetted contour, by Wagner's condition for the actual shape, reaches the
+/// half-breadth `y`; `None` when the condition cannot be solved for this shape.
+pub fn wetting_penetration(section: &Section, y: f64) -> Option<f64> {
+    let d = penetration_for_half_width(section.half_points(), y * (1.0 - 1e-9))?;
     (d.is_finite() && d > 0.0).then_some(d)
 }
 
@@ -69,20 +118,21 @@ pub fn time_to_depth(m: &Motion, depth: f64, t_max: f64) -> Option<(f64, bool)> 
     }
 }
 
-/// End time: the impact is over when Wagner's wetted contour has reached the widest point of the
-/// section and the force has passed its maximum there ([`END_MARGIN`] times the wetting time), or when
-/// the entry velocity has fallen to zero, whichever comes first; never past the keel reaching 0.9 of
-/// the section height (the deck would go under).
-pub fn end_time(section: &Section, m: &Motion) -> Choice {
+/// End time: the impact is over when Wagner's wetted contour has reached the chine (or the widest point,
+/// or past the highest sensor: [`wetting_target`]) and the force has passed its maximum there
+/// ([`END_MARGIN`] times the wetting time), or when the entry velocity has fallen to zero, whichever
+/// comes first; never past the keel reaching 0.9 of the section height (the deck would go under).
+pub fn end_time(section: &Section, m: &Motion, sensors: &[SensorSpec]) -> Choice {
     let h = section.height();
     let t_max = 60.0;
     let deck = time_to_depth(m, 0.9 * h, t_max);
-    let wet = wetting_penetration(section).and_then(|d| time_to_depth(m, d, t_max));
+    let (y_target, what) = wetting_target(section, sensors);
+    let wet = wetting_penetration(section, y_target).and_then(|d| time_to_depth(m, d, t_max));
     match (wet, deck) {
         (Some((t, true)), _) => Choice {
             value: t,
             note: format!(
-                "t_end = {t:.5} s: the entry velocity falls to zero before the wetting reaches the widest point"
+                "t_end = {t:.5} s: the entry velocity falls to zero before the wetting reaches {what}"
             ),
         },
         (Some((t, false)), deck) => {
@@ -96,8 +146,8 @@ pub fn end_time(section: &Section, m: &Motion) -> Choice {
                 value,
                 note: format!(
                     "t_end = {value:.5} s: {END_MARGIN} x the time ({t:.5} s) at which Wagner's wetted half-width \
-                     reaches the widest point of the section, so that the force passes its maximum (at most \
-                     until the entry velocity reverses or the keel is 0.9 x the height deep)"
+                     reaches {what}, so that the force passes its maximum (at most until the entry velocity \
+                     reverses or the keel is 0.9 x the height deep)"
                 ),
             }
         }

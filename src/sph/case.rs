@@ -242,7 +242,7 @@ pub fn resolve(
             t
         }
         None => {
-            let c = automatic::end_time(section, &built);
+            let c = automatic::end_time(section, &built, &sensors);
             notes.push(c.note);
             c.value
         }

@@ -312,8 +312,10 @@ mod tests {
             s.c0
         );
         assert!((s.dp - 0.25 / 40.0).abs() < 1e-12);
-        // No sides above the chine: the run stops when the keel is 0.9 x the section height down.
-        assert!((s.t_end - 0.9 * 0.25 * 30f64.to_radians().tan() / 2.0).abs() < 1e-9);
+        // Wagner's wetting reaches the chine at a keel depth (2/pi) z_chine; the run lasts 1.2 times
+        // that (below the cap of 0.9 x the height).
+        let t_wet = 2.0 / std::f64::consts::PI * 0.25 * 30f64.to_radians().tan() / 2.0;
+        assert!((s.t_end / (1.2 * t_wet) - 1.0).abs() < 1e-3, "{}", s.t_end);
         assert!(s.notes.iter().any(|n| n.starts_with("c0 =")));
     }
 

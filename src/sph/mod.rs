@@ -12,6 +12,7 @@ pub mod body_force;
 pub mod boundary;
 pub mod case;
 pub mod case_file;
+pub mod cost;
 pub mod counters;
 pub mod damping_zone;
 pub mod diffusion;
@@ -20,6 +21,7 @@ pub mod integrator;
 pub mod kernel;
 pub mod neighbours;
 pub mod output;
+pub mod output_dir;
 pub mod particles;
 pub mod rates;
 pub mod riemann;
@@ -38,7 +40,7 @@ use serde::Serialize;
 use crate::analytic::generalised_wagner;
 use crate::error::{Error, Result};
 use crate::files::write_text_atomic;
-use crate::loads::peaks::{Summary, summarise};
+use crate::loads::peaks::{Summary, summarise_after};
 
 pub use case::{Level, MotionSpec, Overrides, SensorMethod, Setup};
 pub use counters::Counters;
@@ -64,6 +66,13 @@ pub struct RunOptions {
 pub struct NamedSummary {
     pub name: String,
     pub unit: String,
+    /// A sensor's physical width along the contour (m).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub width_m: Option<f64>,
+    /// A sensor's integration span [s0, s1] along the contour from the keel (m): its width, or
+    /// [`sensors::MIN_WIDTH_DP`] dp when narrower.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub integration_span_m: Option<[f64; 2]>,
     #[serde(flatten)]
     pub summary: Summary,
 }
@@ -83,10 +92,20 @@ pub struct RunSummary {
     pub wall_time_s: f64,
     /// Why the run stopped early, if it did.
     pub stopped_early: Option<String>,
-    /// Largest wall pressure on the contour (point value at the contour sampling), with time and place.
+    /// End of the contact transient: the time at which the keel is [`CONTACT_TRANSIENT_DP`] particle
+    /// spacings deep. Every peak is taken after it; the largest values before it are reported apart.
+    pub contact_transient_end_s: f64,
+    /// Largest wall pressure on the contour after the contact transient (point value at the contour
+    /// sampling), with time and place.
     pub peak_contour_pressure_pa: f64,
     pub peak_contour_pressure_time_s: f64,
     pub peak_contour_pressure_s_m: f64,
+    /// Largest contour pressure during the contact transient (the acoustic contact spike, of order
+    /// rho c0 V; not a slamming pressure), with its time.
+    pub contact_transient_pressure_pa: f64,
+    pub contact_transient_pressure_time_s: f64,
+    /// Whether the contour peak is the first sample after the contact transient (its tail).
+    pub peak_contour_at_transient_end: bool,
     /// Vertical section force (N per metre of section).
     pub force: NamedSummary,
     pub sensors: Vec<NamedSummary>,
@@ -160,9 +179,20 @@ pub fn run(setup: Setup, opts: &RunOptions) -> Result<RunResult> {
     if opts.progress {
         eprintln!();
     }
-    let summary = summarise_run(&sim, wall.elapsed().as_secs_f64(), stopped.clone())?;
+    // The histories first: whatever fails after the time loop, they are on disk.
     if let Some(dir) = &opts.out_dir {
         write_text_atomic(&dir.join("history.csv"), &output::history_csv(&sim.history))?;
+    }
+    let summary = summarise_run(&sim, wall.elapsed().as_secs_f64(), stopped.clone()).map_err(|e| {
+        let where_ = opts.out_dir.as_ref().map_or(String::new(), |d| {
+            format!(" (the histories are in {})", d.join("history.csv").display())
+        });
+        Error::Numerical(format!(
+            "SPH run '{}' finished its time loop at t = {:.6} s, but its summary failed: {e}{where_}",
+            sim.setup.name, sim.time
+        ))
+    })?;
+    if let Some(dir) = &opts.out_dir {
         let json = serde_json::to_string_pretty(&summary).expect("summary serialises");
         write_text_atomic(&dir.join("summary.json"), &json)?;
         if !frames.is_empty() && opts.vtk {
@@ -222,22 +252,31 @@ fn summarise_run(sim: &Simulation, wall_s: f64, stopped: Option<String>) -> Resu
     let h = &sim.history;
     let s = &sim.setup;
     let fc = s.filter_cutoff_hz;
+    let t_tr = contact_transient_end(h, s.dp);
     let force = NamedSummary {
         name: "fz".into(),
         unit: "N/m".into(),
-        summary: summarise(&h.t, &h.fz, fc)?,
+        width_m: None,
+        integration_span_m: None,
+        summary: summarise_after(&h.t, &h.fz, fc, t_tr)?,
     };
     let mut sensors = Vec::new();
-    for (name, col) in h.sensor_names.iter().zip(&h.sensors) {
+    let spans = sim.sensors().spans();
+    for (k, (name, col)) in h.sensor_names.iter().zip(&h.sensors).enumerate() {
         sensors.push(NamedSummary {
             name: name.clone(),
             unit: "Pa".into(),
-            summary: summarise(&h.t, col, fc)?,
+            width_m: s.sensors.get(k).map(|x| x.width_m),
+            integration_span_m: spans.get(k).copied(),
+            summary: summarise_after(&h.t, col, fc, t_tr)?,
         });
     }
-    let kmax = (0..h.len())
-        .max_by(|&a, &b| h.p_contour_max[a].total_cmp(&h.p_contour_max[b]))
-        .unwrap_or(0);
+    let k_tr = h.t.partition_point(|&t| t < t_tr);
+    let arg_max = |r: std::ops::Range<usize>| {
+        r.max_by(|&a, &b| h.p_contour_max[a].total_cmp(&h.p_contour_max[b]))
+    };
+    let kmax = arg_max(k_tr..h.len()).unwrap_or(0);
+    let ktr = arg_max(0..k_tr);
     let (mut wf, mut wft, mut wp) = (None, None, None);
     if let Some(sec) = sim.section() {
         let e = generalised_wagner::estimate(sec.half_points(), &h.t, &h.v_down, s.rho0);
@@ -259,6 +298,10 @@ fn summarise_run(sim: &Simulation, wall_s: f64, stopped: Option<String>) -> Resu
         t_end_s: sim.time,
         wall_time_s: wall_s,
         stopped_early: stopped,
+        contact_transient_end_s: t_tr,
+        peak_contour_at_transient_end: kmax == k_tr && k_tr + 1 < h.len(),
+        contact_transient_pressure_pa: ktr.map_or(0.0, |k| h.p_contour_max[k]),
+        contact_transient_pressure_time_s: ktr.map_or(0.0, |k| h.t[k]),
         peak_contour_pressure_pa: h.p_contour_max.get(kmax).copied().unwrap_or(0.0),
         peak_contour_pressure_time_s: h.t.get(kmax).copied().unwrap_or(0.0),
         peak_contour_pressure_s_m: h.s_at_p_max.get(kmax).copied().unwrap_or(0.0),
@@ -267,11 +310,57 @@ fn summarise_run(sim: &Simulation, wall_s: f64, stopped: Option<String>) -> Resu
         wagner_peak_force_n_per_m: wf,
         wagner_peak_force_time_s: wft,
         wagner_peak_pressure_pa: wp,
-        warnings: single_phase_warning(sim).into_iter().collect(),
+        warnings: single_phase_warning(sim)
+            .into_iter()
+            .chain(narrow_sensor_warnings(sim))
+            .collect(),
         convergence: None,
         counters: sim.counters.clone(),
         setup: s.clone(),
     })
+}
+
+/// Keel penetration, in particle spacings, up to which a run is in its contact transient (see
+/// [`crate::loads::peaks::Summary::contact_transient`]). Over the first spacings of penetration the body
+/// meets the water through the kernel support and the weakly compressible fluid answers with an acoustic
+/// pressure of order rho c0 V that is the same at every resolution: on a 30 deg wedge at constant speed
+/// the contour pressure peaks at about 0.3 rho c0 V within the first 0.2-0.5 ms, at every spacing.
+pub const CONTACT_TRANSIENT_DP: f64 = 2.0;
+
+/// The time at which the keel is [`CONTACT_TRANSIENT_DP`] dp below the calm surface (the end of the
+/// record if it never gets there).
+fn contact_transient_end(h: &History, dp: f64) -> f64 {
+    let depth = CONTACT_TRANSIENT_DP * dp;
+    h.z_keel
+        .iter()
+        .position(|&z| -z >= depth)
+        .map_or(h.t.last().copied().unwrap_or(0.0), |k| h.t[k])
+}
+
+/// A warning for each sensor narrower than [`sensors::MIN_WIDTH_DP`] dp, with the span it is integrated
+/// over instead.
+fn narrow_sensor_warnings(sim: &Simulation) -> Vec<String> {
+    let dp = sim.setup.dp;
+    sim.setup
+        .sensors
+        .iter()
+        .zip(sim.sensors().spans())
+        .filter(|(s, _)| s.width_m < sensors::MIN_WIDTH_DP * dp)
+        .map(|(s, span)| {
+            format!(
+                "sensor '{}' is {:.1} mm wide, narrower than {} particle spacings ({:.1} mm): a span that \
+                 narrow reads the noise of single particles, so its pressure is integrated over {:.1} mm \
+                 (s = {:.4}-{:.4} m from the keel)",
+                s.name,
+                s.width_m * 1e3,
+                sensors::MIN_WIDTH_DP,
+                sensors::MIN_WIDTH_DP * dp * 1e3,
+                (span[1] - span[0]) * 1e3,
+                span[0],
+                span[1]
+            )
+        })
+        .collect()
 }
 
 /// Deadrise below which single-phase SPH is known to over-predict the peak pressure.

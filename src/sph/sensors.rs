@@ -54,6 +54,8 @@ pub struct SensorSet {
     arc: Vec<f64>,
     /// Particle spacing: the length of contour each body dummy stands for.
     dp: f64,
+    /// Span [s0, s1] along the contour over which each sensor's pressure is integrated.
+    spans: Vec<[f64; 2]>,
 }
 
 /// The face of a sensor for the force-panel method.
@@ -83,15 +85,18 @@ impl SensorSet {
                     s.name, s.s_m, s.width_m, len
                 )));
             }
-            let n = ((s.width_m / (0.25 * dp)).ceil() as usize).max(3);
+            let [a0, a1] = integration_span(s, dp, len);
+            let w = a1 - a0;
+            let n = ((w / (0.25 * dp)).ceil() as usize).max(3);
             for i in 0..n {
-                let a = s.s_m - 0.5 * s.width_m + (i as f64 + 0.5) / n as f64 * s.width_m;
+                let a = a0 + (i as f64 + 0.5) / n as f64 * w;
                 let p = body::point_at_arc(sec, a).expect("inside the contour");
                 set.points.push((k, p[0], p[1]));
             }
             set.names.push(s.name.clone());
             set.counts.push(n);
-            set.panels.push(panel(sec, s.s_m, s.width_m));
+            set.spans.push([a0, a1]);
+            set.panels.push(panel(sec, s.s_m, [a0, a1]));
         }
         set.dp = dp;
         set.half = sec.half_points().to_vec();
@@ -115,6 +120,12 @@ impl SensorSet {
 
     pub fn panels(&self) -> &[Panel] {
         &self.panels
+    }
+
+    /// Span [s0, s1] of the contour over which each sensor's pressure is integrated (its width, or
+    /// [`MIN_WIDTH_DP`] particle spacings when it is narrower).
+    pub fn spans(&self) -> &[[f64; 2]] {
+        &self.spans
     }
 
     /// Arc length from the keel of the starboard contour point nearest to the body-frame point (y, z).
@@ -151,8 +162,23 @@ impl SensorSet {
     }
 }
 
-/// The panel of a sensor centred at arc length `s` of width `w`: its span and the outward normal at s.
-fn panel(sec: &Section, s: f64, w: f64) -> Panel {
+/// Narrowest span, in particle spacings, over which a sensor's pressure is integrated. A sensor narrower
+/// than about 2 dp reads the noise of single particles: force-panel sensors of 5 mm on a 6.25 mm spacing
+/// read 31 % (30 deg) to 56 % (40 deg) high on a constant-speed wedge, and within 2 % at 2 dp.
+pub const MIN_WIDTH_DP: f64 = 2.0;
+
+/// The span of the contour over which a sensor is integrated: its own width about its centre, widened
+/// symmetrically to [`MIN_WIDTH_DP`] dp when narrower, and then moved to lie between the keel and the
+/// deck edge (a contour `len` long) when the widening took it past either.
+pub fn integration_span(s: &SensorSpec, dp: f64, len: f64) -> [f64; 2] {
+    let w = s.width_m.max(MIN_WIDTH_DP * dp).min(len);
+    let a0 = (s.s_m - 0.5 * w).clamp(0.0, len - w);
+    [a0, a0 + w]
+}
+
+/// The panel of a sensor centred at arc length `s` with the span `span`: the span and the outward normal
+/// at s.
+fn panel(sec: &Section, s: f64, span: [f64; 2]) -> Panel {
     let (mut acc, mut n) = (0.0, [0.0, -1.0]);
     for seg in sec.half_points().windows(2) {
         let (ty, tz) = (seg[1][0] - seg[0][0], seg[1][1] - seg[0][1]);
@@ -167,8 +193,8 @@ fn panel(sec: &Section, s: f64, w: f64) -> Panel {
         acc += l;
     }
     Panel {
-        s0: s - 0.5 * w,
-        s1: s + 0.5 * w,
+        s0: span[0],
+        s1: span[1],
         ny: n[0],
         nz: n[1],
     }

@@ -15,7 +15,7 @@ use serde::Serialize;
 
 use crate::error::{Error, Result};
 use crate::files::write_text_atomic;
-use crate::loads::convergence::{PeakConvergence, assess};
+use crate::loads::convergence::{PeakConvergence, Verdict, assess};
 use crate::sph::{RunOptions, RunResult, RunSummary, Setup, case, run};
 
 /// Fewest particles across the largest half-breadth for a companion run to take part in the estimate: below
@@ -67,30 +67,95 @@ pub struct ConvergenceReport {
     pub peaks: Vec<PeakConvergence>,
 }
 
-/// The peaks a summary reports, as (name, unit, value): force and contour peak pressure, and every sensor,
-/// raw and (when a filter was applied) filtered.
-pub fn reported_peaks(s: &RunSummary) -> Vec<(String, String, f64)> {
+/// One peak a summary reports.
+#[derive(Debug, Clone)]
+pub struct ReportedPeak {
+    pub name: String,
+    pub unit: String,
+    pub value: f64,
+    /// The peak is the first sample after the contact transient: the tail of the transient.
+    pub transient_tail: bool,
+    /// The peak is the last sample of the run: the quantity was still rising.
+    pub at_end: bool,
+}
+
+/// The peaks a summary reports: force and contour peak pressure, and every sensor, raw and (when a
+/// filter was applied) filtered, all after the contact transient.
+pub fn reported_peaks(s: &RunSummary) -> Vec<ReportedPeak> {
     let mut out = Vec::new();
     let mut add = |name: &str, unit: &str, sm: &crate::loads::peaks::Summary| {
-        out.push((format!("{name} raw"), unit.to_string(), sm.raw.value));
+        let (tail, at_end) = (sm.at_transient_end, sm.at_record_end);
+        out.push(ReportedPeak {
+            name: format!("{name} raw"),
+            unit: unit.to_string(),
+            value: sm.raw.value,
+            transient_tail: tail,
+            at_end,
+        });
         if let (Some(f), Some(lp)) = (&sm.filtered, &sm.filter) {
-            out.push((
-                format!("{name} filtered {:.0} Hz", lp.cutoff_hz),
-                unit.to_string(),
-                f.value,
-            ));
+            out.push(ReportedPeak {
+                name: format!("{name} filtered {:.0} Hz", lp.cutoff_hz),
+                unit: unit.to_string(),
+                value: f.value,
+                transient_tail: tail,
+                at_end,
+            });
         }
     };
     add("section force", "N/m", &s.force.summary);
     for sen in &s.sensors {
         add(&format!("sensor {}", sen.name), "Pa", &sen.summary);
     }
-    out.push((
-        "contour peak pressure".into(),
-        "Pa".into(),
-        s.peak_contour_pressure_pa,
-    ));
+    out.push(ReportedPeak {
+        name: "contour peak pressure".into(),
+        unit: "Pa".into(),
+        value: s.peak_contour_pressure_pa,
+        transient_tail: s.peak_contour_at_transient_end,
+        at_end: false,
+    });
     out
+}
+
+/// The convergence statement of one peak from its values at every level (finest first), with two
+/// guards against a quantity that is resolution-independent for the wrong reason: a peak that is the
+/// tail of the contact transient at some level is not a hydrodynamic peak there, and values identical
+/// at every spacing come from something the resolution does not touch (an initial state, a clamp).
+fn statement(levels: &[&ReportedPeak], dp: &[f64]) -> PeakConvergence {
+    let values: Vec<f64> = levels.iter().map(|p| p.value).collect();
+    let (name, unit) = (&levels[0].name, &levels[0].unit);
+    let mut c = assess(name, unit, dp, &values);
+    if let Some(k) = levels.iter().position(|p| p.transient_tail) {
+        c.verdict = Verdict::NotConverged;
+        c.statement = format!(
+            "not converged: at dp {:.3} mm the peak is the tail of the contact transient (the first sample \
+             after the keel is {} dp deep), not a hydrodynamic peak; a finer resolution is needed",
+            dp[k] * 1e3,
+            crate::sph::CONTACT_TRANSIENT_DP
+        );
+    } else if let Some(k) = levels.iter().position(|p| p.at_end) {
+        c.verdict = Verdict::NotAssessed;
+        c.statement = format!(
+            "not assessed: at dp {:.3} mm the largest value is at the end of the run, still rising (a steady \
+             or hydrostatic load growing with the immersion), not an impact peak",
+            dp[k] * 1e3
+        );
+    } else if values.len() > 1
+        && values[0] != 0.0
+        && values
+            .iter()
+            .all(|v| (v - values[0]).abs() <= 1e-12 * values[0].abs())
+    {
+        c.verdict = Verdict::NotAssessed;
+        c.statement = format!(
+            "not assessed: the value is identical at every spacing ({}), so it is set by something the \
+             resolution does not change, and says nothing about convergence",
+            dp.iter()
+                .map(|d| format!("{:.3} mm", d * 1e3))
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
+    }
+    c
 }
 
 /// Run `setup` as asked and at the coarser companion spacings of `plan`, and attach the convergence
@@ -162,14 +227,11 @@ pub fn run_with_convergence(setup: Setup, opts: &RunOptions, plan: StudyPlan) ->
     let mut finished: Vec<&RunSummary> = vec![&result.summary];
     finished.extend(companions.iter().rev().filter_map(|c| c.summary.as_ref()));
     let dp: Vec<f64> = finished.iter().map(|s| s.dp_m).collect();
-    let per_level: Vec<Vec<(String, String, f64)>> =
-        finished.iter().map(|s| reported_peaks(s)).collect();
-    let peaks = per_level[0]
-        .iter()
-        .enumerate()
-        .map(|(i, (name, unit, _))| {
-            let values: Vec<f64> = per_level.iter().map(|l| l[i].2).collect();
-            assess(name, unit, &dp, &values)
+    let per_level: Vec<Vec<ReportedPeak>> = finished.iter().map(|s| reported_peaks(s)).collect();
+    let peaks = (0..per_level[0].len())
+        .map(|i| {
+            let levels: Vec<&ReportedPeak> = per_level.iter().map(|l| &l[i]).collect();
+            statement(&levels, &dp)
         })
         .collect();
     let report = ConvergenceReport {

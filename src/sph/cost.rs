@@ -1,0 +1,94 @@
+//! What a run will cost, told before it starts: particles, time steps, particle-steps and an estimated
+//! wall time, with a bound above which a run is refused unless the user insists.
+
+use serde::Serialize;
+
+use crate::error::{Error, Result};
+use crate::sph::case::Setup;
+use crate::sph::study::StudyPlan;
+
+/// Fluid particle-steps per second and per thread assumed for the estimate: below the measured
+/// throughput of `slamtool bench` (2.8-3.0 M on one thread of the 2-core development machine), so that
+/// the estimate errs on the long side on a busy machine.
+pub const PARTICLE_STEPS_PER_THREAD_S: f64 = 2.0e6;
+
+/// Estimated wall time above which a run is refused unless forced (s).
+pub const MAX_WALL_S: f64 = 3600.0;
+
+/// The estimated cost of a run with its convergence companions.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct Estimate {
+    /// Fluid particles of the reported run.
+    pub fluid_particles: f64,
+    /// Time steps of the reported run.
+    pub steps: f64,
+    /// Particle-steps of the reported run and its companions together.
+    pub particle_steps: f64,
+    /// Estimated wall time (s) on `threads` threads.
+    pub wall_s: f64,
+    pub threads: usize,
+}
+
+impl Estimate {
+    /// One line for the terminal.
+    pub fn describe(&self) -> String {
+        format!(
+            "~{:.0} fluid particles, ~{:.0} steps, estimated wall time {} on {} thread(s)",
+            self.fluid_particles,
+            self.steps,
+            human_time(self.wall_s),
+            self.threads
+        )
+    }
+}
+
+/// Estimate the cost of `setup` run with the companions of `plan` on `threads` threads.
+pub fn estimate(setup: &Setup, plan: StudyPlan, threads: usize) -> Estimate {
+    let sides = if setup.mirror { 1.0 } else { 2.0 };
+    let fluid = setup.tank_half_width * setup.tank_depth / (setup.dp * setup.dp) * sides;
+    let v = setup
+        .motion
+        .as_ref()
+        .and_then(|m| m.build().ok())
+        .map_or(0.0, |m| m.max_speed(setup.t_end));
+    let dt = setup.cfl * setup.h_over_dp * setup.dp / (setup.c0 + 1.5 * v);
+    let steps = (setup.t_end / dt).ceil();
+    // A companion at r times the spacing has 1/r^2 of the particles and 1/r of the steps.
+    let companions: f64 = (1..plan.levels)
+        .map(|k| plan.ratio.powi(-3 * k as i32))
+        .sum();
+    let particle_steps = fluid * steps * (1.0 + companions);
+    let threads = threads.max(1);
+    Estimate {
+        fluid_particles: fluid,
+        steps,
+        particle_steps,
+        wall_s: particle_steps / (PARTICLE_STEPS_PER_THREAD_S * threads as f64),
+        threads,
+    }
+}
+
+/// Refuse a run whose estimate exceeds [`MAX_WALL_S`], unless `force`.
+pub fn check(e: &Estimate, force: bool) -> Result<()> {
+    if e.wall_s > MAX_WALL_S && !force {
+        return Err(Error::Invalid(format!(
+            "this run would take about {} ({}): more than the {} bound. Choose a coarser resolution, a \
+             shorter t_end or a smaller tank, or give --force to run it anyway",
+            human_time(e.wall_s),
+            e.describe(),
+            human_time(MAX_WALL_S)
+        )));
+    }
+    Ok(())
+}
+
+/// "42 s", "3.5 min", "2.1 h".
+pub fn human_time(s: f64) -> String {
+    if s < 90.0 {
+        format!("{s:.0} s")
+    } else if s < 5400.0 {
+        format!("{:.1} min", s / 60.0)
+    } else {
+        format!("{:.1} h", s / 3600.0)
+    }
+}
