@@ -4,6 +4,7 @@
 
 pub mod entry_kinematics;
 pub mod generalised_wagner;
+pub mod logvinovich_mlm;
 pub mod section_profile;
 pub mod von_karman;
 pub mod wagner;
