@@ -199,9 +199,10 @@ pub const DEFAULT_CFL: f64 = 0.4;
 /// Whether the Riemann pair terms are on unless a case says otherwise.
 pub const DEFAULT_RIEMANN: bool = true;
 
-/// Wagner's peak pressure coefficient (pi^2/4) cot^2(beta), used only to choose the sound speed.
+/// Wagner's peak pressure coefficient (pi^2/4) cot^2(beta), used only to choose the sound speed; 0 for a
+/// section with no deadrise below 90 deg (all vertical), where the hydrostatic bound then sets c0.
 fn wagner_cp(beta: f64) -> f64 {
-    crate::analytic::wagner::peak_pressure_coefficient(beta)
+    crate::analytic::wagner::peak_pressure_coefficient(beta).unwrap_or(0.0)
 }
 
 /// Resolve a case: fill every automatic choice not overridden, and record how.
