@@ -39,7 +39,7 @@ fn free_drop(
 /// Downward speed of the 2D Wagner momentum model for a free-falling wedge at the times `t_ms` (ms).
 fn wagner_drop(deadrise_deg: f64, mass: f64, v0: f64, t_ms: &[f64]) -> Vec<f64> {
     let t: Vec<f64> = t_ms.iter().map(|t| t * 1e-3).collect();
-    wagner::free_drop_speed(deadrise_deg.to_radians(), 1000.0, mass, v0, 9.81, &t, 1e-6)
+    wagner::free_drop_speed(deadrise_deg.to_radians(), 1000.0, mass, v0, 9.81, &t, 1e-6).unwrap()
 }
 
 /// The SPH downward speed (mean over 0.2 ms) at the times of the measured `rows` (t_ms, v_m_s), printed
@@ -208,7 +208,8 @@ fn yettou2006_criterion_against_2d_momentum_models() {
             &t,
             1e-6,
             k,
-        );
+        )
+        .unwrap();
         let worst = rows
             .iter()
             .zip(&v)

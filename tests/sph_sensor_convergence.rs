@@ -97,7 +97,7 @@ fn peak_errors(deadrise_deg: f64, n_half: f64, method: SensorMethod) -> PeakErro
         )
     } else {
         (
-            wagner::peak_pressure_coefficient(beta),
+            wagner::peak_pressure_coefficient(beta).unwrap(),
             0.5 * std::f64::consts::PI,
         )
     };

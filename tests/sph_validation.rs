@@ -226,8 +226,8 @@ fn wedge30_constant_speed_force_bounds() {
     let (t0, t1) = (0.3 * t_wet, 0.6 * t_wet);
     let f_sph = window_mean(&h.t, &h.fz, t0, t1);
     let tm = 0.45 * t_wet;
-    let f_w = wagner::force(run.beta, 1000.0, run.speed, tm);
-    let f_vk = von_karman::force(run.beta, 1000.0, run.speed, tm);
+    let f_w = wagner::force(run.beta, 1000.0, run.speed, tm).unwrap();
+    let f_vk = von_karman::force(run.beta, 1000.0, run.speed, tm).unwrap();
     eprintln!(
         "30 deg force over {t0:.4}-{t1:.4} s: SPH {f_sph:.0} N/m, von Karman {f_vk:.0}, Wagner {f_w:.0} (SPH/Wagner {:.3})",
         f_sph / f_w

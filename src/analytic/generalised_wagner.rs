@@ -2,108 +2,102 @@
 //! approximation of Wagner 1932, with the wetting condition solved for the actual shape; see Faltinsen
 //! 2005, "Hydrodynamics of High-Speed Marine Vehicles", ch. 8).
 //!
-//! With the body surface z = f(y) above the keel and the penetration depth d(t):
+//! With the body surface z = f(y) above the keel ([`Profile`]) and the penetration depth d(t):
 //!
 //! * Wagner condition: integral_0^{pi/2} f(c sin theta) d theta = (pi/2) d
-//!   gives the wetted half-width c(d);
+//!   gives the wetted half-width c(d) ([`crate::analytic::entry_kinematics`]);
 //! * force per unit length F = d/dt (rho pi c^2 V / 2) = rho pi (c c' V + c^2 V'/2), c' = dc/dt = V dc/dd;
 //! * peak (jet-root) pressure p_max = rho c'^2 / 2 (for a wedge at constant V this is (pi^2/4) cot^2(beta)
 //!   rho V^2/2).
 //!
-//! It holds for moderate deadrise and before flow separation at a knuckle; beyond the chine it is not
-//! valid (reported as `None`).
+//! It holds for moderate deadrise and before flow separation at a knuckle or at the widest point of a
+//! bulb; the estimate stops there (`stopped` says why).
+//!
+//! **Flat keel, acoustic stage.** A flat keel of half-width c_f is wetted at once on contact: Wagner's
+//! c jumps to c_f, c' and hence force and pressure are unbounded (flat-plate impact). While c' would be
+//! at least the sound speed of water c_w (always at first contact of a flat keel, and just after it),
+//! or wherever Wagner's values exceed them, the estimate reports the acoustic (water-hammer) values
+//! p = rho c_w V and F = 2 c rho c_w V instead, and flags the sample in `acoustic_limited`. These are the
+//! compressible limit of a flat impact of a rigid body on pure water (Korobkin & Pukhnachov 1988), not a
+//! Wagner result and not a strict bound on a local peak; air cushioning lowers real values much further
+//! (see the single-phase warning of the SPH reports).
 
-use crate::numerics::Pchip;
+use crate::analytic::entry_kinematics::{EntryHistory, WATER_SOUND_SPEED};
+use crate::analytic::section_profile::Profile;
+use crate::error::Result;
+use std::f64::consts::PI;
 
 /// Wagner estimate along a time history.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Default)]
 pub struct WagnerEstimate {
+    /// Kept sample times (duplicates and steps back in the input skipped).
     pub t: Vec<f64>,
     pub penetration: Vec<f64>,
     pub half_width: Vec<f64>,
     pub force: Vec<f64>,
     pub peak_pressure: Vec<f64>,
+    /// Whether force or peak pressure at the sample is the acoustic value rho c_w V (not Wagner's).
+    pub acoustic_limited: Vec<bool>,
+    /// Half-width of the flat part of the keel (0 with deadrise at the keel).
+    pub flat_keel_half_width: f64,
+    /// Why the estimate ends before the last sample, if it does.
+    pub stopped: Option<String>,
+    /// Notes for reports (flat keel, acoustic values).
+    pub notes: Vec<String>,
 }
 
-/// Height of the body surface above the keel at half-breadth y (first crossing from the keel), or `None`
-/// above the widest point. `half` is the starboard half of the section, keel first at (0, 0).
-fn surface_height(half: &[[f64; 2]], y: f64) -> Option<f64> {
-    for w in half.windows(2) {
-        let (a, b) = (w[0], w[1]);
-        if (a[0] <= y && y <= b[0]) && b[0] > a[0] {
-            return Some(a[1] + (y - a[0]) / (b[0] - a[0]) * (b[1] - a[1]));
-        }
-    }
-    None
-}
-
-/// Penetration depth at which the wetted half-width is c (the Wagner condition), or `None` past the chine.
+/// Penetration depth at which the wetted half-width is c (the Wagner condition), or `None` past the chine
+/// or widest point, or for a section the model cannot take (see [`Profile::from_half_points`]).
 pub fn penetration_for_half_width(half: &[[f64; 2]], c: f64) -> Option<f64> {
-    let n = 64;
-    let (x, w) = crate::numerics::quadrature::gauss_legendre(n);
-    let half_pi = std::f64::consts::FRAC_PI_2;
-    let mut s = 0.0;
-    for k in 0..n {
-        let theta = 0.5 * half_pi * (x[k] + 1.0);
-        s += 0.5 * half_pi * w[k] * surface_height(half, c * theta.sin())?;
-    }
-    Some(s / half_pi)
+    Profile::from_half_points(half).ok()?.wagner_depth(c)
 }
 
-/// Wagner estimate for a section (starboard half `half`, keel first at (0, 0)) moving down with speed
-/// v(t) (sampled at times `t`, with the same `v`), density rho. Stops where the wetted half-width reaches
-/// the widest point of the section.
-pub fn estimate(half: &[[f64; 2]], t: &[f64], v: &[f64], rho: f64) -> WagnerEstimate {
-    let b = half.iter().map(|p| p[0]).fold(0.0, f64::max);
-    // Table d(c) on a fine c grid, inverted to c(d).
-    let m = 400;
-    let mut cs = Vec::new();
-    let mut ds = Vec::new();
-    for k in 1..=m {
-        let c = b * k as f64 / m as f64;
-        if let Some(d) = penetration_for_half_width(half, c) {
-            if ds.last().is_none_or(|&last| d > last) {
-                cs.push(c);
-                ds.push(d);
-            }
-        }
-    }
+/// Wagner estimate for a section (starboard half `half`, keel first at y = 0) moving down with speed
+/// v(t) (sampled at times `t`, with the same `v`), density rho. Stops where the wetted half-width
+/// reaches the chine or widest point of the section, or where v turns negative. Errors for a section
+/// the model cannot take (contour below its keel, no breadth), mismatched lengths or non-finite speeds.
+pub fn estimate(half: &[[f64; 2]], t: &[f64], v: &[f64], rho: f64) -> Result<WagnerEstimate> {
+    let hist = EntryHistory::new(half, t, v)?;
     let mut out = WagnerEstimate {
-        t: Vec::new(),
-        penetration: Vec::new(),
-        half_width: Vec::new(),
-        force: Vec::new(),
-        peak_pressure: Vec::new(),
+        flat_keel_half_width: hist.profile.flat_keel_half_width(),
+        stopped: hist.stopped.clone(),
+        ..Default::default()
     };
-    if ds.len() < 4 || t.len() < 2 {
-        return out;
+    for s in &hist.states {
+        let p_ac = rho * WATER_SOUND_SPEED * s.v;
+        let f_ac = 2.0 * s.c * p_ac;
+        let (force, p, limited) = match s.c_dot {
+            Some(cd) => {
+                let f = rho * PI * (s.c * cd * s.v + 0.5 * s.c * s.c * s.v_dot);
+                let p = 0.5 * rho * cd * cd;
+                (f.min(f_ac), p.min(p_ac), f > f_ac || p > p_ac)
+            }
+            None => (f_ac, p_ac, true),
+        };
+        out.t.push(s.t);
+        out.penetration.push(s.h);
+        out.half_width.push(s.c);
+        out.force.push(force);
+        out.peak_pressure.push(p);
+        out.acoustic_limited.push(limited);
     }
-    // Prepend the keel (c = 0 at d = 0).
-    cs.insert(0, 0.0);
-    ds.insert(0, 0.0);
-    let c_of_d = Pchip::new(&ds, &cs);
-    let vp = Pchip::new(t, v);
-    let d_max = *ds.last().unwrap();
-    let mut d = 0.0;
-    for k in 0..t.len() {
-        if k > 0 {
-            let dt = t[k] - t[k - 1];
-            d += 0.5 * dt * (v[k] + v[k - 1]);
-        }
-        if d > d_max {
-            break;
-        }
-        let c = c_of_d.eval(d);
-        let dcdt = c_of_d.derivative(d) * v[k];
-        let dvdt = vp.derivative(t[k]);
-        out.t.push(t[k]);
-        out.penetration.push(d);
-        out.half_width.push(c);
-        out.force
-            .push(rho * std::f64::consts::PI * (c * dcdt * v[k] + 0.5 * c * c * dvdt));
-        out.peak_pressure.push(0.5 * rho * dcdt * dcdt);
+    if out.flat_keel_half_width > 0.0 {
+        out.notes.push(format!(
+            "flat keel of half-width {:.4} m: Wagner's wetted width jumps to it at contact and its force and \
+             pressure are unbounded there (flat-plate impact); the acoustic values rho c_w V (c_w = {} m/s) \
+             are reported instead where flagged; air cushioning lowers real values",
+            out.flat_keel_half_width, WATER_SOUND_SPEED
+        ));
     }
-    out
+    let n_ac = out.acoustic_limited.iter().filter(|&&a| a).count();
+    if n_ac > 0 {
+        out.notes.push(format!(
+            "{n_ac} of {} samples carry the acoustic limit rho c_w V instead of Wagner's force or peak \
+             pressure (incompressible theory out of range there)",
+            out.t.len()
+        ));
+    }
+    Ok(out)
 }
 
 #[cfg(test)]
@@ -118,17 +112,109 @@ mod tests {
         let s = [[0.0, 0.0], [0.25, zk], [0.25, 0.29]];
         let t: Vec<f64> = (0..=100).map(|k| k as f64 * 1e-4).collect();
         let v = vec![5.0; t.len()];
-        let e = estimate(&s, &t, &v, 1000.0);
+        let e = estimate(&s, &t, &v, 1000.0).unwrap();
         assert!(e.t.len() > 50);
         let k = 50;
-        let f = wagner::force(beta, 1000.0, 5.0, e.t[k]);
+        let f = wagner::force(beta, 1000.0, 5.0, e.t[k]).unwrap();
         assert!((e.force[k] / f - 1.0).abs() < 0.01, "{} vs {f}", e.force[k]);
         let cp = 2.0 * e.peak_pressure[k] / (1000.0 * 25.0);
         assert!(
-            (cp / wagner::peak_pressure_coefficient(beta) - 1.0).abs() < 0.01,
+            (cp / wagner::peak_pressure_coefficient(beta).unwrap() - 1.0).abs() < 0.01,
             "{cp}"
         );
-        let c = wagner::wetted_half_width(beta, 5.0, e.t[k]);
+        let c = wagner::wetted_half_width(beta, 5.0, e.t[k]).unwrap();
         assert!((e.half_width[k] / c - 1.0).abs() < 0.01);
+    }
+
+    fn all_finite(e: &WagnerEstimate) -> bool {
+        [&e.penetration, &e.half_width, &e.force, &e.peak_pressure]
+            .iter()
+            .all(|x| x.iter().all(|v| v.is_finite()))
+    }
+
+    fn times(n: usize, dt: f64) -> Vec<f64> {
+        (0..n).map(|k| k as f64 * dt).collect()
+    }
+
+    #[test]
+    fn flat_bottom_with_deadrise_starts_acoustic_then_follows_wagner() {
+        let s = [[0.0, 0.0], [0.1, 0.0], [0.25, 0.15], [0.25, 0.3]];
+        let t = times(400, 1e-4);
+        let e = estimate(&s, &t, &vec![5.0; t.len()], 1000.0).unwrap();
+        assert!(all_finite(&e));
+        assert_eq!(e.flat_keel_half_width, 0.1);
+        assert!(e.acoustic_limited[0]);
+        assert_eq!(e.peak_pressure[0], 1000.0 * WATER_SOUND_SPEED * 5.0);
+        assert_eq!(e.half_width[0], 0.1);
+        // Later on the 45 deg flank Wagner's values return.
+        assert!(!e.acoustic_limited.last().unwrap());
+        assert!(e.half_width.windows(2).all(|w| w[1] >= w[0]));
+        assert!(e.stopped.is_some(), "the chine is reached");
+        assert!(!e.notes.is_empty());
+    }
+
+    #[test]
+    fn flat_rectangle_gives_only_the_acoustic_contact_value() {
+        let s = [[0.0, 0.0], [0.2, 0.0], [0.2, 0.2]];
+        let t = times(50, 1e-4);
+        let e = estimate(&s, &t, &vec![3.0; t.len()], 1000.0).unwrap();
+        assert_eq!(e.t.len(), 1);
+        assert!(all_finite(&e));
+        assert!(e.acoustic_limited[0]);
+        assert_eq!(e.force[0], 2.0 * 0.2 * 1000.0 * WATER_SOUND_SPEED * 3.0);
+    }
+
+    #[test]
+    fn vertical_segments_at_the_keel_and_in_the_middle() {
+        // A keel bar (vertical at the keel), then 20 deg, a vertical step, 30 deg to the chine.
+        let s = [
+            [0.0, 0.0],
+            [0.0, 0.02],
+            [0.1, 0.02 + 0.1 * 20f64.to_radians().tan()],
+            [0.1, 0.08],
+            [0.25, 0.08 + 0.15 * 30f64.to_radians().tan()],
+        ];
+        let t = times(300, 1e-4);
+        let e = estimate(&s, &t, &vec![4.0; t.len()], 1000.0).unwrap();
+        assert!(all_finite(&e));
+        assert!(e.t.len() > 50);
+        // Before the bar's depth is reached there is no wetted width and no load.
+        assert_eq!(e.half_width[1], 0.0);
+        assert_eq!(e.force[1], 0.0);
+        assert_eq!(e.peak_pressure[1], 0.0);
+        assert!(e.half_width.iter().any(|&c| c > 0.12));
+    }
+
+    #[test]
+    fn bulb_stops_at_its_widest_point() {
+        let s = [
+            [0.0, 0.0],
+            [0.08, 0.02],
+            [0.12, 0.08],
+            [0.1, 0.15],
+            [0.06, 0.2],
+            [0.3, 0.45],
+        ];
+        let t = times(400, 1e-4);
+        let e = estimate(&s, &t, &vec![5.0; t.len()], 1000.0).unwrap();
+        assert!(all_finite(&e));
+        assert!(e.half_width.iter().all(|&c| c <= 0.12));
+        assert!(e.stopped.as_deref().unwrap().contains("separation"));
+    }
+
+    #[test]
+    fn repeated_times_and_deceleration() {
+        let beta = 25f64.to_radians();
+        let s = [[0.0, 0.0], [0.3, 0.3 * beta.tan()]];
+        let mut t = times(200, 1e-4);
+        t.insert(10, t[10]);
+        t.insert(50, t[49]);
+        let v: Vec<f64> = t.iter().map(|&tk| 5.0 - 200.0 * tk).collect();
+        let e = estimate(&s, &t, &v, 1000.0).unwrap();
+        assert!(all_finite(&e));
+        assert_eq!(e.t.len(), 200);
+        assert!(e.t.windows(2).all(|w| w[1] > w[0]));
+        assert!(estimate(&s, &[0.0, 1.0], &[1.0], 1000.0).is_err());
+        assert!(estimate(&[[0.0, 0.1], [0.2, 0.0]], &t, &v, 1000.0).is_err());
     }
 }

@@ -2,7 +2,10 @@
 //!
 //! All for a 2D symmetric section entering calm water, incompressible, no air, no gravity.
 
+pub mod entry_kinematics;
 pub mod generalised_wagner;
+pub mod logvinovich_mlm;
+pub mod section_profile;
 pub mod von_karman;
 pub mod wagner;
 pub mod wagner_pressure;

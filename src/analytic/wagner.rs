@@ -10,28 +10,47 @@
 //!   flat-plate approximation m_a = (pi/2) rho c^2 with c = (pi/2) z cot(beta) at penetration z, and
 //!   d/dt [(m + m_a(z)) V] = m g, dz/dt = V.
 
+//!
+//! Every function takes the deadrise in radians and returns an error outside 0 < beta < 90 deg (see
+//! [`cot_deadrise`]) instead of an infinite or meaningless value.
+
+use crate::error::{Error, Result};
 use std::f64::consts::PI;
 
+/// cot(beta) of a wedge deadrise, or an error unless 0 < beta < 90 deg: at 0 deg (a flat plate) Wagner's
+/// and von Karman's values are unbounded (see `generalised_wagner` for the acoustic limit of a flat
+/// keel), at 90 deg (a vertical plate) there is no wetted width.
+pub fn cot_deadrise(beta: f64) -> Result<f64> {
+    if beta > 0.0 && beta < 0.5 * PI {
+        Ok(1.0 / beta.tan())
+    } else {
+        Err(Error::Invalid(format!(
+            "wedge formulas need a deadrise strictly between 0 and 90 deg, got {} deg",
+            beta.to_degrees()
+        )))
+    }
+}
+
 /// Cp_max = (pi^2/4) cot^2(beta).
-pub fn peak_pressure_coefficient(beta: f64) -> f64 {
-    let cot = 1.0 / beta.tan();
-    0.25 * PI * PI * cot * cot
+pub fn peak_pressure_coefficient(beta: f64) -> Result<f64> {
+    let cot = cot_deadrise(beta)?;
+    Ok(0.25 * PI * PI * cot * cot)
 }
 
 /// Cp_max = 1 + (pi^2/4) cot^2(beta) (composite form quoted by some texts).
-pub fn composite_peak_pressure_coefficient(beta: f64) -> f64 {
-    1.0 + peak_pressure_coefficient(beta)
+pub fn composite_peak_pressure_coefficient(beta: f64) -> Result<f64> {
+    Ok(1.0 + peak_pressure_coefficient(beta)?)
 }
 
 /// Wetted half-width c(t) = (pi/2) V t / tan(beta).
-pub fn wetted_half_width(beta: f64, v: f64, t: f64) -> f64 {
-    0.5 * PI * v * t / beta.tan()
+pub fn wetted_half_width(beta: f64, v: f64, t: f64) -> Result<f64> {
+    Ok(0.5 * PI * v * t * cot_deadrise(beta)?)
 }
 
 /// Vertical force per unit length F = (pi^3/4) rho V^3 t cot^2(beta).
-pub fn force(beta: f64, rho: f64, v: f64, t: f64) -> f64 {
-    let cot = 1.0 / beta.tan();
-    0.25 * PI.powi(3) * rho * v.powi(3) * t * cot * cot
+pub fn force(beta: f64, rho: f64, v: f64, t: f64) -> Result<f64> {
+    let cot = cot_deadrise(beta)?;
+    Ok(0.25 * PI.powi(3) * rho * v.powi(3) * t * cot * cot)
 }
 
 /// Downward speed of a freely falling wedge (mass `mass_per_m` per metre, entry speed `v0`) at the times
@@ -45,7 +64,7 @@ pub fn free_drop_speed(
     g: f64,
     t: &[f64],
     dt_max: f64,
-) -> Vec<f64> {
+) -> Result<Vec<f64>> {
     free_drop_speed_scaled(beta, rho, mass_per_m, v0, g, t, dt_max, 1.0)
 }
 
@@ -63,8 +82,8 @@ pub fn free_drop_speed_scaled(
     t: &[f64],
     dt_max: f64,
     factor: f64,
-) -> Vec<f64> {
-    let k = 0.5 * PI / beta.tan();
+) -> Result<Vec<f64>> {
+    let k = 0.5 * PI * cot_deadrise(beta)?;
     let added = |z: f64| factor * 0.5 * PI * rho * (k * z) * (k * z);
     let speed = |momentum: f64, z: f64| momentum / (mass_per_m + added(z));
     let (mut time, mut z, mut momentum) = (0.0, 0.0, mass_per_m * v0);
@@ -80,7 +99,7 @@ pub fn free_drop_speed_scaled(
         }
         out.push(speed(momentum, z));
     }
-    out
+    Ok(out)
 }
 
 #[cfg(test)]
@@ -91,11 +110,12 @@ mod tests {
     fn tabulated_values() {
         // data/reference/water_entry_theory.md: 34.37 at 15 deg, 18.63 at 20 deg, 7.402 at 30 deg.
         for (deg, cp) in [(15.0f64, 34.37), (20.0, 18.63), (30.0, 7.402)] {
-            let v = peak_pressure_coefficient(deg.to_radians());
+            let v = peak_pressure_coefficient(deg.to_radians()).unwrap();
             assert!((v - cp).abs() < 0.01, "{deg}: {v}");
         }
         // Seed check: 37 deg flare struck at 1.4 m/s gives about 4.26 kPa.
-        let p = 0.5 * 1000.0 * 1.4f64.powi(2) * peak_pressure_coefficient(37f64.to_radians());
+        let p =
+            0.5 * 1000.0 * 1.4f64.powi(2) * peak_pressure_coefficient(37f64.to_radians()).unwrap();
         assert!((p - 4260.0).abs() < 20.0, "{p}");
     }
 
@@ -104,7 +124,7 @@ mod tests {
         // With g = 0: (m + m_a(z)) V = m V0 at every instant, z = integral of V.
         let (beta, m, v0) = (30f64.to_radians(), 241.0, 6.15);
         let t: Vec<f64> = (0..=10).map(|k| k as f64 * 2.5e-3).collect();
-        let v = free_drop_speed(beta, 1000.0, m, v0, 0.0, &t, 1e-6);
+        let v = free_drop_speed(beta, 1000.0, m, v0, 0.0, &t, 1e-6).unwrap();
         let mut z = 0.0;
         for k in 1..t.len() {
             z += 0.5 * (v[k] + v[k - 1]) * (t[k] - t[k - 1]);
@@ -117,5 +137,15 @@ mod tests {
             );
         }
         assert!(v.windows(2).all(|w| w[1] < w[0]));
+    }
+
+    #[test]
+    fn flat_and_vertical_deadrise_are_errors_not_infinities() {
+        for beta in [0.0, -0.1, 0.5 * PI, 2.0, f64::NAN] {
+            assert!(peak_pressure_coefficient(beta).is_err());
+            assert!(wetted_half_width(beta, 5.0, 0.01).is_err());
+            assert!(force(beta, 1000.0, 5.0, 0.01).is_err());
+            assert!(free_drop_speed(beta, 1000.0, 100.0, 5.0, 9.81, &[0.0, 0.01], 1e-4).is_err());
+        }
     }
 }

@@ -18,9 +18,13 @@
 //! 1.4 % higher (the outer-minus-common part is still positive there). Linear theory: valid for small deadrise; at
 //! 20 deg Wagner's peak is about 5 % above the similarity solution (data/reference/water_entry_theory.md).
 
+use crate::error::Result;
 use std::f64::consts::PI;
 
-/// A wedge of deadrise `beta` (rad) entering water of density `rho` at constant speed `v`.
+/// A wedge of deadrise `beta` (rad) entering water of density `rho` at constant speed `v`. The deadrise
+/// must lie strictly between 0 and 90 deg (flat plate: unbounded; vertical: no wetted width):
+/// [`WagnerWedge::new`] checks it; a value built field by field outside that range gives infinite or
+/// zero c'.
 #[derive(Debug, Clone, Copy)]
 pub struct WagnerWedge {
     pub beta: f64,
@@ -29,6 +33,12 @@ pub struct WagnerWedge {
 }
 
 impl WagnerWedge {
+    /// A wedge with its deadrise checked ([`crate::analytic::wagner::cot_deadrise`]).
+    pub fn new(beta: f64, rho: f64, v: f64) -> Result<Self> {
+        crate::analytic::wagner::cot_deadrise(beta)?;
+        Ok(Self { beta, rho, v })
+    }
+
     /// dc/dt = (pi/2) V cot(beta).
     pub fn c_dot(&self) -> f64 {
         0.5 * PI * self.v / self.beta.tan()
@@ -115,11 +125,13 @@ mod tests {
     use crate::analytic::wagner;
 
     fn wedge(deg: f64) -> WagnerWedge {
-        WagnerWedge {
-            beta: deg.to_radians(),
-            rho: 1000.0,
-            v: 5.0,
-        }
+        WagnerWedge::new(deg.to_radians(), 1000.0, 5.0).unwrap()
+    }
+
+    #[test]
+    fn flat_and_vertical_wedges_are_refused() {
+        assert!(WagnerWedge::new(0.0, 1000.0, 5.0).is_err());
+        assert!(WagnerWedge::new(0.5 * PI, 1000.0, 5.0).is_err());
     }
 
     #[test]
@@ -128,10 +140,10 @@ mod tests {
             let w = wedge(deg);
             let t = 0.01;
             let c = w.c(t);
-            assert!((c - wagner::wetted_half_width(w.beta, 5.0, t)).abs() < 1e-12);
+            assert!((c - wagner::wetted_half_width(w.beta, 5.0, t).unwrap()).abs() < 1e-12);
             let q = 0.5 * 1000.0 * 25.0;
             let cp_peak = w.pressure(t, c) / q;
-            let cp = wagner::peak_pressure_coefficient(w.beta);
+            let cp = wagner::peak_pressure_coefficient(w.beta).unwrap();
             assert!((cp_peak / cp - 1.0).abs() < 1e-9, "{cp_peak} vs {cp}");
             // The largest composite pressure lies just inside x = c (where the outer-minus-common part
             // is still positive), a little above the Wagner value.

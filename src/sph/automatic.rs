@@ -198,7 +198,8 @@ pub fn sound_speed(section: &Section, v_max: f64, g: f64, tank_depth: f64) -> Ch
         .find(|p| p[0] >= b * (1.0 - 1e-9))
         .map_or(section.height(), |p| p[1]);
     let beta = section.min_deadrise_below(z_chine).max(10f64.to_radians());
-    let cp = crate::analytic::wagner::peak_pressure_coefficient(beta);
+    // 0 for a section whose contour below the chine is all vertical: the other bounds then set c0.
+    let cp = crate::analytic::wagner::peak_pressure_coefficient(beta).unwrap_or(0.0);
     let c_imp = v_max * (cp / (2.0 * DENSITY_VARIATION)).sqrt();
     let c_mach = 10.0 * v_max;
     let c_hyd = 10.0 * (g * tank_depth).sqrt();

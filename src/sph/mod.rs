@@ -278,12 +278,23 @@ fn summarise_run(sim: &Simulation, wall_s: f64, stopped: Option<String>) -> Resu
     let kmax = arg_max(k_tr..h.len()).unwrap_or(0);
     let ktr = arg_max(0..k_tr);
     let (mut wf, mut wft, mut wp) = (None, None, None);
+    let mut warnings: Vec<String> = single_phase_warning(sim)
+        .into_iter()
+        .chain(narrow_sensor_warnings(sim))
+        .collect();
     if let Some(sec) = sim.section() {
-        let e = generalised_wagner::estimate(sec.half_points(), &h.t, &h.v_down, s.rho0);
-        if let Some(k) = (0..e.t.len()).max_by(|&a, &b| e.force[a].total_cmp(&e.force[b])) {
-            wf = Some(e.force[k]);
-            wft = Some(e.t[k]);
-            wp = e.peak_pressure.iter().copied().reduce(f64::max);
+        match generalised_wagner::estimate(sec.half_points(), &h.t, &h.v_down, s.rho0) {
+            Ok(e) => {
+                if let Some(k) = (0..e.t.len()).max_by(|&a, &b| e.force[a].total_cmp(&e.force[b])) {
+                    wf = Some(e.force[k]);
+                    wft = Some(e.t[k]);
+                    wp = e.peak_pressure.iter().copied().reduce(f64::max);
+                }
+                if e.acoustic_limited.iter().any(|&a| a) {
+                    warnings.extend(e.notes.iter().map(|n| format!("Wagner estimate: {n}")));
+                }
+            }
+            Err(err) => warnings.push(format!("no Wagner estimate: {err}")),
         }
     }
     Ok(RunSummary {
@@ -310,10 +321,7 @@ fn summarise_run(sim: &Simulation, wall_s: f64, stopped: Option<String>) -> Resu
         wagner_peak_force_n_per_m: wf,
         wagner_peak_force_time_s: wft,
         wagner_peak_pressure_pa: wp,
-        warnings: single_phase_warning(sim)
-            .into_iter()
-            .chain(narrow_sensor_warnings(sim))
-            .collect(),
+        warnings,
         convergence: None,
         counters: sim.counters.clone(),
         setup: s.clone(),
