@@ -6,6 +6,7 @@ use clap::{Args, Subcommand};
 use slamtool::hull::{Hull, Hydrostatics, MassProperties};
 
 use super::hull_generate;
+use super::hull_import;
 
 #[derive(Debug, Subcommand)]
 pub enum HullCommand {
@@ -15,6 +16,8 @@ pub enum HullCommand {
     Section(SectionArgs),
     /// Write one of the example/reference hulls (hulls/*.toml) from its generator.
     Generate(hull_generate::GenerateArgs),
+    /// Import a hull from an offsets grid (CSV) or a closed surface (STL).
+    Import(hull_import::ImportArgs),
 }
 
 #[derive(Debug, Args)]
@@ -54,6 +57,7 @@ pub fn run(c: HullCommand) -> slamtool::Result<()> {
         HullCommand::Info(a) => info(a),
         HullCommand::Section(a) => section(a),
         HullCommand::Generate(a) => hull_generate::run(a),
+        HullCommand::Import(a) => hull_import::run(a),
     }
 }
 

@@ -9,6 +9,7 @@ mod completions;
 mod entry;
 mod hull;
 mod hull_generate;
+mod hull_import;
 mod motions;
 mod sea;
 

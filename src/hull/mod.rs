@@ -7,6 +7,7 @@
 
 pub mod generate;
 mod hydrostatics;
+pub mod import;
 mod interpolate;
 mod load;
 mod offsets_csv;
