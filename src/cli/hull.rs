@@ -7,6 +7,7 @@ use slamtool::hull::{Hull, Hydrostatics, MassProperties};
 
 use super::hull_generate;
 use super::hull_import;
+use super::hull_plot;
 
 #[derive(Debug, Subcommand)]
 pub enum HullCommand {
@@ -18,6 +19,8 @@ pub enum HullCommand {
     Generate(hull_generate::GenerateArgs),
     /// Import a hull from an offsets grid (CSV) or a closed surface (STL).
     Import(hull_import::ImportArgs),
+    /// Draw the body plan as SVG.
+    Plot(hull_plot::PlotArgs),
 }
 
 #[derive(Debug, Args)]
@@ -58,6 +61,7 @@ pub fn run(c: HullCommand) -> slamtool::Result<()> {
         HullCommand::Section(a) => section(a),
         HullCommand::Generate(a) => hull_generate::run(a),
         HullCommand::Import(a) => hull_import::run(a),
+        HullCommand::Plot(a) => hull_plot::run(a),
     }
 }
 

@@ -10,6 +10,7 @@ mod entry;
 mod hull;
 mod hull_generate;
 mod hull_import;
+mod hull_plot;
 mod motions;
 mod sea;
 
