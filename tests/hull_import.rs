@@ -199,6 +199,8 @@ fn wigley_grid_csv_matches_the_closed_forms() {
     }
     drop(f);
     check_against_closed_forms(&path, None);
+    // Resampled to 21 stations by the shape-preserving interpolation.
+    check_against_closed_forms(&path, Some(21));
 }
 
 #[test]
@@ -223,6 +225,29 @@ fn an_open_surface_and_a_bad_grid_are_reported() {
     assert!(!out.status.success());
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("bad.csv:3:7:"), "{err}");
+
+    // Fractions of Lpp need Lpp.
+    let frac = dir.path().join("frac.csv");
+    std::fs::write(&frac, "aft_of_fp,0,0.1\n0,0,0.1\n1,0,0.1\n").unwrap();
+    let e = import(&frac, &options(None)).unwrap_err().to_string();
+    assert!(e.contains("--lpp-m"), "{e}");
+
+    // A draft above the deck: the usual check, located in the written hull file.
+    let (v, t) = wigley_mesh();
+    let stl = dir.path().join("w.stl");
+    write_binary_stl(&stl, &v, &t);
+    let toml = dir.path().join("deep.toml");
+    let out = Command::new(env!("CARGO_BIN_EXE_slamtool"))
+        .args(["hull", "import"])
+        .arg(&stl)
+        .args(["--draft-m", "0.4", "-o"])
+        .arg(&toml)
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    let located = format!("{}:", toml.display());
+    assert!(err.contains(&located) && err.contains("deck"), "{err}");
 }
 
 #[test]

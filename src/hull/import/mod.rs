@@ -11,6 +11,7 @@ pub mod slice;
 
 use std::path::Path;
 
+use super::generate::toml_writer::fmt_num;
 use super::generate::{HullSpec, LoadingSpec, Position, RadiusOfGyration, StationSpec};
 use super::schema::StationColumn;
 use super::{Hull, station_x};
@@ -155,8 +156,8 @@ fn frame(opts: &ImportOptions, lo: f64, hi: f64, notes: &mut Vec<String>) -> (f6
         Some(l) => l,
         None => {
             notes.push(format!(
-                "Lpp = {:.6} m, the length of the offsets (not given)",
-                hi - lo
+                "Lpp = {} m, the length of the offsets (not given)",
+                fmt_num(hi - lo)
             ));
             hi - lo
         }
