@@ -301,7 +301,8 @@ fn import_stl(path: &Path, opts: &ImportOptions) -> Result<Imported> {
     // The end stations are moved inboard by a millionth of the length, where the plane still cuts the
     // surface rather than touching it at a point or along the stem.
     let nudge = 1e-6 * len;
-    let tol = 1e-9 * len.max(1.0);
+    // Within this of the centreline counts as on it: a few float32 roundings of the file's coordinates.
+    let tol = 1e-7 * len;
     let mut stations = Vec::with_capacity(n);
     for i in 0..n {
         let xs = x0 + len * i as f64 / (n - 1) as f64;

@@ -108,7 +108,7 @@ impl Mesh {
 
 /// The half-breadth contour (y ≥ 0 side) of a section from its cut loops: every arc of a loop that runs
 /// through y > 0 between two centreline crossings, oriented keel-first, stacked from the lowest up, with
-/// a run along the deck back to the centreline at the top dropped. `None` if no loop reaches y > 0.
+/// the deck (the run at the top going back inboard at less than 45°) dropped. `None` if no loop reaches y > 0.
 pub fn half_contour(loops: &[Vec<[f64; 2]>], tol: f64) -> Option<Vec<[f64; 2]>> {
     let mut arcs: Vec<Vec<[f64; 2]>> = Vec::new();
     for lp in loops {
@@ -155,11 +155,12 @@ pub fn half_contour(loops: &[Vec<[f64; 2]>], tol: f64) -> Option<Vec<[f64; 2]>> 
     arcs.sort_by(|a, b| a[0][1].total_cmp(&b[0][1]));
     let mut out: Vec<[f64; 2]> = arcs.concat();
     out.dedup_by(|a, b| (a[0] - b[0]).abs() < 1e-12 && (a[1] - b[1]).abs() < 1e-12);
-    // Drop the deck: points at the top height that run back inboard.
-    let top = out[out.len() - 1][1];
+    // Drop the deck: the run at the top that goes back inboard at less than 45° to the horizontal (flat
+    // or cambered; a tumblehome side is steeper and stays).
     while out.len() > 2 {
         let (p, q) = (out[out.len() - 2], out[out.len() - 1]);
-        if (p[1] - top).abs() <= tol && (q[1] - top).abs() <= tol && q[0] < p[0] {
+        let (dy, dz) = (q[0] - p[0], q[1] - p[1]);
+        if dy < 0.0 && dz.abs() <= -dy {
             out.pop();
         } else {
             break;
@@ -213,6 +214,23 @@ mod tests {
         assert_eq!(half.last().copied(), Some([1.0, 2.0]));
         assert!(half.iter().all(|p| p[0] >= 0.0));
         assert!(m.slice_x(3.0).unwrap().is_empty());
+    }
+
+    #[test]
+    fn a_cambered_deck_is_dropped_and_tumblehome_kept() {
+        // Half of a section with tumblehome above z = 1 and a cambered deck, as one closed loop.
+        let half = [
+            [0.0, 0.0],
+            [1.0, 0.2],
+            [1.2, 1.0],
+            [1.1, 2.0],
+            [0.5, 2.1],
+            [0.0, 2.15],
+        ];
+        let mut lp: Vec<[f64; 2]> = half.to_vec();
+        lp.extend(half[1..half.len() - 1].iter().rev().map(|p| [-p[0], p[1]]));
+        let c = half_contour(&[lp], 1e-9).unwrap();
+        assert_eq!(c, half[..4].to_vec());
     }
 
     #[test]
