@@ -171,6 +171,12 @@ fn wigley_stl_binary_and_ascii_match_the_closed_forms() {
     let bin = dir.path().join("wigley.stl");
     write_binary_stl(&bin, &v, &t);
     check_against_closed_forms(&bin, Some(21));
+    // A binary file whose header starts with "solid", as some CAD programs write them.
+    let mut bytes = std::fs::read(&bin).unwrap();
+    bytes[..12].copy_from_slice(b"solid wigley");
+    let solid = dir.path().join("wigley-solid-header.stl");
+    std::fs::write(&solid, bytes).unwrap();
+    check_against_closed_forms(&solid, Some(21));
     let ascii = dir.path().join("wigley-ascii.stl");
     write_ascii_stl(&ascii, &v, &t);
     check_against_closed_forms(&ascii, Some(21));

@@ -222,8 +222,17 @@ fn import_grid(path: &Path, opts: &ImportOptions) -> Result<Imported> {
 
 /// Read an STL file (ASCII or binary) into a mesh with shared vertices.
 pub fn read_stl(path: &Path) -> Result<Mesh> {
-    let mut f = std::fs::File::open(path).map_err(|e| Error::io(path, e))?;
-    let m = stl_io::read_stl(&mut f).map_err(|e| {
+    let mut bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
+    // Some CAD programs start the 80-byte header of a binary STL with "solid", which makes it look like
+    // ASCII. A file whose size is exactly that of a binary STL with the triangle count in bytes 80-83 is
+    // binary: blank its header (free text, ignored) so that the reader takes it as such.
+    if bytes.len() >= 84 && bytes.starts_with(b"solid") {
+        let n = u32::from_le_bytes([bytes[80], bytes[81], bytes[82], bytes[83]]) as usize;
+        if bytes.len() == 84 + 50 * n {
+            bytes[..80].fill(0);
+        }
+    }
+    let m = stl_io::read_stl(&mut std::io::Cursor::new(bytes)).map_err(|e| {
         Error::Invalid(format!(
             "{}: not a readable STL file (ASCII or binary): {e}",
             path.display()
