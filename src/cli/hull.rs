@@ -6,6 +6,8 @@ use clap::{Args, Subcommand};
 use slamtool::hull::{Hull, Hydrostatics, MassProperties};
 
 use super::hull_generate;
+use super::hull_import;
+use super::hull_plot;
 
 #[derive(Debug, Subcommand)]
 pub enum HullCommand {
@@ -15,6 +17,10 @@ pub enum HullCommand {
     Section(SectionArgs),
     /// Write one of the example/reference hulls (hulls/*.toml) from its generator.
     Generate(hull_generate::GenerateArgs),
+    /// Import a hull from an offsets grid (CSV) or a closed surface (STL).
+    Import(hull_import::ImportArgs),
+    /// Draw the body plan as SVG.
+    Plot(hull_plot::PlotArgs),
 }
 
 #[derive(Debug, Args)]
@@ -54,6 +60,8 @@ pub fn run(c: HullCommand) -> slamtool::Result<()> {
         HullCommand::Info(a) => info(a),
         HullCommand::Section(a) => section(a),
         HullCommand::Generate(a) => hull_generate::run(a),
+        HullCommand::Import(a) => hull_import::run(a),
+        HullCommand::Plot(a) => hull_plot::run(a),
     }
 }
 

@@ -9,6 +9,8 @@ mod completions;
 mod entry;
 mod hull;
 mod hull_generate;
+mod hull_import;
+mod hull_plot;
 mod motions;
 mod sea;
 

@@ -5,8 +5,10 @@
 //! Axes: x forward from midship (FP at +Lpp/2, AP at −Lpp/2), y to port (half-breadth), z up from the
 //! baseline. A station given as a fraction f of Lpp aft of the FP sits at x = Lpp/2 − f·Lpp.
 
+pub mod body_plan;
 pub mod generate;
 mod hydrostatics;
+pub mod import;
 mod interpolate;
 mod load;
 mod offsets_csv;

@@ -34,7 +34,7 @@ pub(crate) fn read_stations(
 }
 
 /// Column (1-based) where field `field` starts on a CSV line (plain comma-separated fields).
-fn column_of(line: &str, field: usize) -> usize {
+pub(crate) fn column_of(line: &str, field: usize) -> usize {
     let line = line.trim_start_matches('\u{feff}');
     let mut col = 1;
     for (i, part) in line.split(',').enumerate() {

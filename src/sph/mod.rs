@@ -17,6 +17,7 @@ pub mod counters;
 pub mod damping_zone;
 pub mod diffusion;
 pub mod eos;
+pub mod frame;
 pub mod integrator;
 pub mod kernel;
 pub mod neighbours;
@@ -30,6 +31,7 @@ pub mod shifting;
 pub mod solver;
 pub mod study;
 pub mod tank;
+pub mod vtu;
 
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
@@ -236,14 +238,22 @@ fn write_snapshot(
         let window = [-y1, y1, -(1.5 * b).min(s.tank_depth), hgt.max(0.5 * b)];
         // Colour scale: 0.01 rho0 c0^2, the expected peak pressure the sound speed was chosen for.
         let p_scale = 0.01 * s.rho0 * s.c0 * s.c0;
-        output::write_png(
-            &dir.join(format!("frame_{k:04}.png")),
-            &sim.pt,
+        // The body outline where the body is now (the section's keel is at z = 0 in its own frame).
+        let outline = sim.section().map_or_else(Vec::new, |x| {
+            x.closed_contour()
+                .iter()
+                .map(|p| [p[0], p[1] + sim.body.z_keel])
+                .collect()
+        });
+        let frame = output::Frame {
             window,
-            1000,
+            width: 1000,
             p_scale,
-            s.mirror,
-        )?;
+            mirror: s.mirror,
+            time_s: sim.time,
+            outline,
+        };
+        output::write_png(&dir.join(format!("frame_{k:04}.png")), &sim.pt, &frame)?;
     }
     Ok(())
 }

@@ -1,0 +1,188 @@
+//! The body plan of a hull as SVG, drawn the way a naval architect draws it: the sections of the fore
+//! body (stations forward of midship) to the right of the centreline, those of the aft body mirrored to
+//! the left, midship on both sides; the waterline of each loading, and the sensors marked and named.
+//!
+//! With trim the waterline differs from station to station: the mean-draft waterline is drawn across,
+//! and each section gets a tick at its own local waterline.
+
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+
+use super::Hull;
+use super::generate::toml_writer::fmt_decimals;
+use crate::error::Result;
+use crate::plot::{FONT, draw_error, register_font};
+
+/// Plot-area width in pixels; the height follows from the hull's depth at equal scales.
+const PLOT_WIDTH: u32 = 900;
+/// Space for the title, axis labels and margins, pixels.
+const TOP: u32 = 50;
+const BOTTOM: u32 = 55;
+const LEFT: u32 = 70;
+const MARGIN: u32 = 20;
+
+/// Colours of the loadings' waterlines, in turn.
+const WATER: [RGBColor; 3] = [
+    RGBColor(0, 90, 200),
+    RGBColor(0, 150, 130),
+    RGBColor(120, 60, 200),
+];
+
+/// The body plan of `hull` as an SVG document.
+pub fn body_plan_svg(hull: &Hull) -> Result<String> {
+    register_font();
+    let ymax = hull
+        .stations
+        .iter()
+        .map(|s| s.section.max_half_breadth())
+        .fold(0.0, f64::max)
+        .max(1e-3);
+    let zmin = hull
+        .stations
+        .iter()
+        .map(|s| s.section.keel_z())
+        .fold(f64::INFINITY, f64::min)
+        .min(0.0);
+    let ztop = hull.depth.max(
+        hull.stations
+            .iter()
+            .map(|s| s.section.deck_z())
+            .fold(0.0, f64::max),
+    );
+    let pad = 0.08 * ymax.max(ztop - zmin);
+    let (y0, y1) = (-ymax - pad, ymax + pad);
+    let (z0, z1) = (zmin - 0.5 * pad, ztop + pad);
+    let h_plot = (PLOT_WIDTH as f64 * (z1 - z0) / (y1 - y0))
+        .round()
+        .clamp(150.0, 2000.0) as u32;
+    let size = (
+        PLOT_WIDTH + LEFT + 2 * MARGIN,
+        h_plot + TOP + BOTTOM + 2 * MARGIN,
+    );
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, size).into_drawing_area();
+        root.fill(&WHITE).map_err(draw_error)?;
+        let mut chart = ChartBuilder::on(&root)
+            .margin(MARGIN)
+            .caption(
+                format!("{}: body plan (aft body left, fore body right)", hull.name),
+                (FONT, 18),
+            )
+            .x_label_area_size(BOTTOM)
+            .y_label_area_size(LEFT)
+            .build_cartesian_2d(y0..y1, z0..z1)
+            .map_err(draw_error)?;
+        chart
+            .configure_mesh()
+            .x_desc("half-breadth y (m), aft body mirrored to the left; stations labelled by fraction of Lpp aft of the FP")
+            .y_desc("z above baseline (m)")
+            .x_label_formatter(&|v| fmt_decimals(v.abs(), 4))
+            .label_style((FONT, 13))
+            .axis_desc_style((FONT, 14))
+            .bold_line_style(RGBColor(225, 225, 225))
+            .light_line_style(TRANSPARENT)
+            .draw()
+            .map_err(draw_error)?;
+        // Centreline.
+        chart
+            .draw_series(LineSeries::new(
+                [(0.0, z0), (0.0, z1)],
+                BLACK.stroke_width(1),
+            ))
+            .map_err(draw_error)?;
+        // Station labels (fraction of Lpp aft of the FP) at the deck ends, skipped where one would overlap
+        // the last one drawn on that side.
+        let min_gap = 0.045 * (y1 - y0);
+        let mut last_label = [f64::NAN; 2];
+        for st in &hull.stations {
+            let sides: &[f64] = if st.x.abs() < 1e-9 {
+                &[-1.0, 1.0]
+            } else if st.x > 0.0 {
+                &[1.0]
+            } else {
+                &[-1.0]
+            };
+            for &s in sides {
+                let pts = st.section.points.iter().map(|p| (s * p[0], p[1]));
+                chart
+                    .draw_series(LineSeries::new(pts, BLACK.stroke_width(1)))
+                    .map_err(draw_error)?;
+                for (j, l) in hull.loadings.iter().enumerate() {
+                    let zw = l.draft_at(st.x, hull.lpp);
+                    let yw = s * st.section.half_breadth_at(zw);
+                    let c = WATER[j % WATER.len()];
+                    chart
+                        .draw_series(std::iter::once(Circle::new((yw, zw), 2, c.filled())))
+                        .map_err(draw_error)?;
+                }
+            }
+            let top = st.section.points[st.section.points.len() - 1];
+            let s = if st.x < 0.0 { -1.0 } else { 1.0 };
+            let side = usize::from(s > 0.0);
+            if last_label[side].is_nan() || (s * top[0] - last_label[side]).abs() >= min_gap {
+                last_label[side] = s * top[0];
+                let style = TextStyle::from((FONT, 10).into_font())
+                    .color(&RGBColor(90, 90, 90))
+                    .pos(Pos::new(HPos::Center, VPos::Bottom));
+                chart
+                    .draw_series(std::iter::once(Text::new(
+                        format!("{:.3}", hull.aft_of_fp(st.x) + 0.0),
+                        (s * top[0], top[1] + 0.15 * pad),
+                        style,
+                    )))
+                    .map_err(draw_error)?;
+            }
+        }
+        for (j, l) in hull.loadings.iter().enumerate() {
+            let c = WATER[j % WATER.len()];
+            let t = l.mean_draft();
+            chart
+                .draw_series(DashedLineSeries::new(
+                    [(y0, t), (y1, t)],
+                    6,
+                    4,
+                    c.stroke_width(1),
+                ))
+                .map_err(draw_error)?;
+            let style = TextStyle::from((FONT, 12).into_font())
+                .color(&c)
+                .pos(Pos::new(HPos::Left, VPos::Bottom));
+            let trim = if l.trim_by_stern().abs() > 0.0 {
+                format!(", FP {:.3} m / AP {:.3} m", l.draft_fp, l.draft_ap)
+            } else {
+                String::new()
+            };
+            chart
+                .draw_series(std::iter::once(Text::new(
+                    format!("waterline {}: T = {:.3} m{trim}", l.name, t),
+                    (y0 + 0.02 * (y1 - y0), t + 0.1 * pad + j as f64 * 0.6 * pad),
+                    style,
+                )))
+                .map_err(draw_error)?;
+        }
+        let red = RGBColor(200, 30, 30);
+        for sensor in &hull.sensors {
+            let s = if sensor.x < 0.0 { -1.0 } else { 1.0 };
+            let at = (s * sensor.position[0], sensor.position[1]);
+            chart
+                .draw_series(std::iter::once(Circle::new(at, 4, red.filled())))
+                .map_err(draw_error)?;
+            let style = TextStyle::from((FONT, 11).into_font())
+                .color(&red)
+                .pos(Pos::new(
+                    if s > 0.0 { HPos::Left } else { HPos::Right },
+                    VPos::Center,
+                ));
+            chart
+                .draw_series(std::iter::once(Text::new(
+                    format!(" {} ", sensor.name),
+                    at,
+                    style,
+                )))
+                .map_err(draw_error)?;
+        }
+        root.present().map_err(draw_error)?;
+    }
+    Ok(svg)
+}
