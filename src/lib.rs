@@ -25,6 +25,7 @@ pub mod analytic;
 pub mod error;
 pub mod files;
 pub mod hull;
+pub mod impact;
 pub mod input;
 pub mod loads;
 pub mod numerics;

@@ -1,0 +1,74 @@
+//! From relative motion to water entry (the 2D+t join, Veen 2010 ch. 6): the seakeeping station of a
+//! hull section (its local draft in the loading), the 2D section that enters the water, and the
+//! entry-velocity history after keel entry as the prescribed motion of a 2D run.
+//!
+//! Frames: the hull's sections are given above the baseline; the 2D water-entry frame has the keel at
+//! the origin at the instant of keel entry and the undisturbed local water surface at z = 0 (see
+//! [`crate::sph::body`]). The relative motion s(t) and velocity come from strip theory
+//! ([`crate::seakeeping::relative_motion`]); the downward entry velocity is V = -Ds/Dt.
+
+use crate::error::{Error, Result};
+use crate::hull::{Hull, LoadingCondition};
+use crate::seakeeping::analysis::Station;
+use crate::seakeeping::relative_motion::KeelEntry;
+use crate::seakeeping::section::HalfSection;
+use crate::sph::MotionSpec;
+use crate::sph::body::Section;
+
+/// The seakeeping station at `aft_of_fp` (fraction of Lpp aft of the FP) in `loading`: its local draft
+/// from the wetted half section and its keel-to-deck height.
+pub fn seakeeping_station(
+    hull: &Hull,
+    loading: &LoadingCondition,
+    aft_of_fp: f64,
+) -> Result<Station> {
+    if !(aft_of_fp.is_finite() && (0.0..=1.0).contains(&aft_of_fp)) {
+        return Err(Error::Invalid(format!(
+            "a station is a fraction of Lpp aft of the FP in [0, 1], got {aft_of_fp}"
+        )));
+    }
+    let x = hull.station_x(aft_of_fp);
+    let sec = hull.section_at(x)?;
+    let z_w = loading.draft_at(x, hull.lpp);
+    let mut pts: Vec<[f64; 2]> = Vec::new();
+    for q in sec.wetted(z_w).iter().map(|p| [p[0], p[1] - z_w]) {
+        if pts
+            .last()
+            .is_none_or(|l: &[f64; 2]| (l[0] - q[0]).hypot(l[1] - q[1]) > 1e-9)
+        {
+            pts.push(q);
+        }
+    }
+    if pts.len() < 2 {
+        return Err(Error::Invalid(format!(
+            "station {aft_of_fp} Lpp aft of the FP is dry at loading '{}'",
+            loading.name
+        )));
+    }
+    let h = HalfSection::new(pts)?;
+    Ok(Station::new(
+        hull.lpp,
+        aft_of_fp,
+        &h,
+        sec.deck_z() - sec.keel_z(),
+    ))
+}
+
+/// The 2D section that enters the water at x (m from midship): the hull section from the keel to the
+/// deck edge, keel at the origin.
+pub fn entry_section(hull: &Hull, x: f64) -> Result<Section> {
+    let hs = hull.section_at(x)?;
+    Section::from_half_points(hs.points.clone())
+}
+
+/// The prescribed motion of a 2D run: the downward entry velocity from keel entry until it reverses
+/// (or the keel is as deep as the profile goes), as a table [t_s, v_m_per_s].
+pub fn entry_motion(entry: &KeelEntry) -> MotionSpec {
+    MotionSpec::Prescribed {
+        table: entry
+            .samples
+            .iter()
+            .map(|s| [s.t, s.velocity.max(0.0)])
+            .collect(),
+    }
+}
