@@ -28,6 +28,7 @@ pub mod hull;
 pub mod input;
 pub mod loads;
 pub mod numerics;
+pub mod progress;
 pub mod provenance;
 pub mod report;
 pub mod sea;

@@ -34,11 +34,18 @@ use crate::sph::sensors::SensorSpec;
 #[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
 pub enum MotionSpec {
     /// Constant entry speed.
-    Constant { speed_m_s: f64 },
+    Constant {
+        #[serde(rename = "speed_m_per_s", alias = "speed_m_s")]
+        speed_m_s: f64,
+    },
     /// Downward speed from a table of [t_s, v_m_s] rows.
     Prescribed { table: Vec<[f64; 2]> },
     /// Free fall in heave with the given mass per metre of section, from the given entry speed.
-    FreeHeave { mass_per_m_kg: f64, speed_m_s: f64 },
+    FreeHeave {
+        mass_per_m_kg: f64,
+        #[serde(rename = "speed_m_per_s", alias = "speed_m_s")]
+        speed_m_s: f64,
+    },
 }
 
 impl MotionSpec {
@@ -81,7 +88,7 @@ pub enum SensorMethod {
     #[default]
     Interpolated,
     /// Normal force of the fluid-body pair forces on the body dummies whose contour projection lies
-    /// within the sensor's span, divided by the span ([`crate::sph::sensors`]): a transducer that
+    /// within the sensor's span, divided by the span (see the `sensors` module): a transducer that
     /// measures the force on its face, consistent with the pair-force section force.
     ForcePanel,
 }
@@ -90,8 +97,11 @@ pub enum SensorMethod {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
 #[serde(rename_all = "lowercase")]
 pub enum Level {
+    /// 40 particles across the largest half-breadth.
     Coarse,
+    /// 80 particles across the largest half-breadth.
     Medium,
+    /// 160 particles across the largest half-breadth.
     Fine,
 }
 

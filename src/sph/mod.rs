@@ -27,7 +27,6 @@ pub mod solver;
 pub mod study;
 pub mod tank;
 
-use std::io::Write as _;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -49,8 +48,8 @@ pub use study::{ConvergenceReport, StudyPlan, run_with_convergence};
 pub struct RunOptions {
     /// Output folder; `None` writes nothing.
     pub out_dir: Option<PathBuf>,
-    /// Print a progress line on stderr.
-    pub progress: bool,
+    /// Where progress goes (nothing by default); the CLI draws it as a progress bar.
+    pub progress: crate::progress::ProgressHandle,
     /// Write VTK snapshots (needs `snapshot_interval` in the setup).
     pub vtk: bool,
     /// Write PNG frames (needs `snapshot_interval` in the setup).
@@ -73,6 +72,7 @@ pub struct RunSummary {
     pub tool_version: String,
     pub dp_m: f64,
     pub h_m: f64,
+    #[serde(rename = "c0_m_per_s")]
     pub c0_m_s: f64,
     pub fluid_particles: usize,
     pub total_particles: usize,
@@ -118,20 +118,16 @@ pub fn run(setup: Setup, opts: &RunOptions) -> Result<RunResult> {
     let snap = sim.setup.snapshot_interval.filter(|_| opts.vtk || opts.png);
     let mut frames: Vec<(f64, String)> = Vec::new();
     let mut next_snap = 0.0;
-    let mut last_print = Instant::now();
+    let progress_sink = opts.progress.clone();
+    progress_sink.start(&sim.setup.name, t_end * 1e3, "ms");
     let mut progress = |s: &Simulation| {
-        if opts.progress && last_print.elapsed().as_secs_f64() > 0.5 {
-            last_print = Instant::now();
-            eprint!(
-                "\r  t = {:8.3} ms / {:.3} ms  step {:7}  dt {:.2e} s  Fz {:10.1} N/m   ",
-                s.time * 1e3,
-                t_end * 1e3,
-                s.steps,
-                s.dt,
-                s.body.fz
-            );
-            let _ = std::io::stderr().flush();
-        }
+        progress_sink.update(
+            s.time * 1e3,
+            &format!(
+                "step {}, dt {:.2e} s, section force {:.1} N/m",
+                s.steps, s.dt, s.body.fz
+            ),
+        );
     };
     let mut stopped = None;
     loop {
@@ -155,9 +151,7 @@ pub fn run(setup: Setup, opts: &RunOptions) -> Result<RunResult> {
             break;
         }
     }
-    if opts.progress {
-        eprintln!();
-    }
+    opts.progress.finish();
     let summary = summarise_run(&sim, wall.elapsed().as_secs_f64(), stopped.clone())?;
     if let Some(dir) = &opts.out_dir {
         write_text_atomic(&dir.join("history.csv"), &output::history_csv(&sim.history))?;

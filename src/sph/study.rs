@@ -142,12 +142,11 @@ pub fn run_with_convergence(setup: Setup, opts: &RunOptions, plan: StudyPlan) ->
             companions.push(c);
             continue;
         }
-        if opts.progress {
-            eprintln!("  convergence companion at dp {:.3} mm", s.dp * 1e3);
-        }
+        opts.progress
+            .note(&format!("convergence companion at dp {:.3} mm", s.dp * 1e3));
         let o = RunOptions {
             out_dir: folder,
-            progress: opts.progress,
+            progress: opts.progress.clone(),
             vtk: false,
             png: false,
         };
