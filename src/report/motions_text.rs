@@ -17,7 +17,7 @@ pub fn tables(hull: &str, loading: &str, r: &Report, warnings: &[String]) -> Str
             out += &regular_wave(w, r.slam_threshold_velocity_m_s);
         }
         for ir in &s.irregular {
-            out += &irregular_sea(ir);
+            out += &irregular_sea(ir, r.lpp_m);
         }
     }
     out += &operability(r);
@@ -161,8 +161,9 @@ pub fn regular_wave(w: &RegularResult, threshold_m_per_s: f64) -> String {
     o
 }
 
-/// Relative motion statistics and Ochi slam occurrence per station in one irregular sea.
-pub fn irregular_sea(ir: &IrregularResult) -> String {
+/// Relative motion statistics and Ochi slam occurrence per station in one irregular sea (`lpp` in m, for
+/// the station column).
+pub fn irregular_sea(ir: &IrregularResult, lpp: f64) -> String {
     let mut o = String::new();
     let _ = writeln!(
         o,
@@ -171,19 +172,20 @@ pub fn irregular_sea(ir: &IrregularResult) -> String {
     );
     let _ = writeln!(
         o,
-        "{:>8} {:>10} {:>10} {:>10} {:>9} {:>14}",
-        "x", "rel.motion", "rel.veloc.", "slam prob.", "slams", "extreme entry"
+        "{:>8} {:>8} {:>10} {:>10} {:>10} {:>9} {:>14}",
+        "station", "x", "rel.motion", "rel.veloc.", "slam prob.", "slams", "extreme entry"
     );
     let _ = writeln!(
         o,
-        "{:>8} {:>10} {:>10} {:>10} {:>9} {:>14}",
-        "m", "st.dev. m", "st.dev. m/s", "per enc.", "per hour", "velocity m/s"
+        "{:>8} {:>8} {:>10} {:>10} {:>10} {:>9} {:>14}",
+        "", "m", "st.dev. m", "st.dev. m/s", "per enc.", "per hour", "velocity m/s"
     );
     for (t, e) in ir.stations.iter().zip(&ir.extreme_velocity_m_s) {
         let e = e.map_or("-".to_string(), |v| format!("{v:.3}"));
         let _ = writeln!(
             o,
-            "{:8.3} {:10.4} {:10.4} {:10.3e} {:9.2} {:>14}",
+            "{:8.3} {:8.3} {:10.4} {:10.4} {:10.3e} {:9.2} {:>14}",
+            (0.5 * lpp - t.x) / lpp,
             t.x,
             t.m0.sqrt(),
             t.m2.sqrt(),
