@@ -326,6 +326,7 @@ fn go(mut setup: sph::Setup, run: Run, name: &str) -> slamtool::Result<()> {
         progress: progress_bar::handle(),
         vtk: c.frames > 0,
         png: c.frames > 0,
+        provenance: Some(run.prov.clone()),
     };
     let plan = sph::StudyPlan {
         levels: c.convergence_levels as usize,

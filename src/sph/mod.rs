@@ -54,6 +54,8 @@ pub struct RunOptions {
     pub vtk: bool,
     /// Write PNG frames (needs `snapshot_interval` in the setup).
     pub png: bool,
+    /// Provenance for the head of the CSV files (tool, commit, inputs, settings).
+    pub provenance: Option<crate::provenance::Provenance>,
 }
 
 /// Peak of one recorded quantity.
@@ -154,7 +156,8 @@ pub fn run(setup: Setup, opts: &RunOptions) -> Result<RunResult> {
     opts.progress.finish();
     let summary = summarise_run(&sim, wall.elapsed().as_secs_f64(), stopped.clone())?;
     if let Some(dir) = &opts.out_dir {
-        write_text_atomic(&dir.join("history.csv"), &output::history_csv(&sim.history))?;
+        let csv = output::history_csv(&sim.history, opts.provenance.as_ref())?;
+        write_text_atomic(&dir.join("history.csv"), &csv)?;
         let json = serde_json::to_string_pretty(&summary).expect("summary serialises");
         write_text_atomic(&dir.join("summary.json"), &json)?;
         if !frames.is_empty() && opts.vtk {
