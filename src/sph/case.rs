@@ -81,7 +81,7 @@ pub enum ForceMethod {
 
 /// How a sensor's pressure is obtained.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize, clap::ValueEnum)]
-#[serde(rename_all = "snake_case")]
+#[serde(rename_all = "kebab-case")]
 pub enum SensorMethod {
     /// Mean over the sensor's width of the wall pressure extrapolated from the fluid (Adami et al. 2012),
     /// zero where the fluid support is below the dry threshold.
@@ -90,6 +90,7 @@ pub enum SensorMethod {
     /// Normal force of the fluid-body pair forces on the body dummies whose contour projection lies
     /// within the sensor's span, divided by the span (see the `sensors` module): a transducer that
     /// measures the force on its face, consistent with the pair-force section force.
+    #[serde(alias = "force_panel")]
     ForcePanel,
 }
 
