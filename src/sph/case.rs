@@ -122,12 +122,17 @@ impl Level {
 pub struct Setup {
     pub name: String,
     /// Starboard half of the section, keel first (body frame); `None` for a tank without a body.
+    #[serde(rename = "section_points_y_z_m")]
     pub section_points: Option<Vec<[f64; 2]>>,
     pub motion: Option<MotionSpec>,
+    #[serde(rename = "water_density_kg_per_m3")]
     pub rho0: f64,
+    #[serde(rename = "gravity_m_per_s2")]
     pub g: f64,
+    #[serde(rename = "dp_m")]
     pub dp: f64,
     pub h_over_dp: f64,
+    #[serde(rename = "c0_m_per_s")]
     pub c0: f64,
     pub eos: EosKind,
     /// delta-SPH coefficient (Antuono et al. 2010).
@@ -149,14 +154,19 @@ pub struct Setup {
     /// How the sensor pressures are computed.
     #[serde(default)]
     pub sensor_method: SensorMethod,
+    #[serde(rename = "tank_half_width_m")]
     pub tank_half_width: f64,
+    #[serde(rename = "tank_depth_m")]
     pub tank_depth: f64,
+    #[serde(rename = "tank_wall_height_m")]
     pub tank_wall_height: f64,
     /// Half domain with a symmetry plane at y = 0.
     pub mirror: bool,
+    #[serde(rename = "t_end_s")]
     pub t_end: f64,
     pub sensors: Vec<SensorSpec>,
     /// Time between particle snapshots (VTK/PNG); `None` for none.
+    #[serde(rename = "snapshot_interval_s")]
     pub snapshot_interval: Option<f64>,
     /// Cut-off of the zero-phase low-pass filter applied to the reported peaks (Hz); `None` for raw only.
     pub filter_cutoff_hz: Option<f64>,

@@ -86,6 +86,7 @@ pub struct RunSummary {
     /// Largest wall pressure on the contour (point value at the contour sampling), with time and place.
     pub peak_contour_pressure_pa: f64,
     pub peak_contour_pressure_time_s: f64,
+    #[serde(rename = "peak_contour_pressure_girth_m")]
     pub peak_contour_pressure_s_m: f64,
     /// Vertical section force (N per metre of section).
     pub force: NamedSummary,
@@ -218,7 +219,7 @@ fn summarise_run(sim: &Simulation, wall_s: f64, stopped: Option<String>) -> Resu
     let s = &sim.setup;
     let fc = s.filter_cutoff_hz;
     let force = NamedSummary {
-        name: "fz".into(),
+        name: "section force".into(),
         unit: "N/m".into(),
         summary: summarise(&h.t, &h.fz, fc)?,
     };
