@@ -17,13 +17,13 @@ const WEDGE_EXAMPLES: &str = "\
 Examples:
   slamtool entry wedge --deadrise-deg 30 --speed 5 -o out/wedge30
   slamtool entry wedge --deadrise-deg 20 --speed 3 --resolution medium --convergence-levels 3
-  slamtool entry wedge --deadrise-deg 30 --speed 5 --resolution coarse --convergence-levels 1 --frames 0 --json";
+  slamtool entry wedge --deadrise-deg 30 --speed 5 --convergence-levels 1 --frames 0 --json";
 
 const SECTION_EXAMPLES: &str = "\
 Examples:
   slamtool entry section hulls/ochi-vform.toml --station 0.1 --speed 2.0 -o out/ochi-st0.1
-  slamtool entry section hulls/car-carrier-hm2005.toml --station 0.05 --speed 3 --sensor-method force-panel
-  slamtool entry section hulls/ochi-vform.toml --x-m 2.4 --speed 1.5 --convergence-levels 1 --json";
+  slamtool entry section hulls/car-carrier-hm2005.toml --station 0.05 --speed 3 --dp 0.002
+  slamtool entry section hulls/ochi-vform.toml --x-m 2.4 --speed 1.5 --json";
 
 const CASE_EXAMPLES: &str = "\
 Examples:

@@ -25,10 +25,17 @@ pub enum ColorWhen {
 #[derive(Debug, Clone, Args)]
 pub struct GlobalArgs {
     /// No progress bars or notes on stderr; results, warnings and errors are still printed.
-    #[arg(short, long, global = true)]
+    #[arg(short, long, global = true, help_heading = "Global options")]
     pub quiet: bool,
     /// Colour the help, warnings and errors.
-    #[arg(long, value_enum, global = true, default_value_t = ColorWhen::Auto, value_name = "WHEN")]
+    #[arg(
+        long,
+        value_enum,
+        global = true,
+        default_value_t = ColorWhen::Auto,
+        value_name = "WHEN",
+        help_heading = "Global options"
+    )]
     pub color: ColorWhen,
 }
 

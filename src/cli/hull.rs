@@ -130,7 +130,7 @@ fn info(a: InfoArgs) -> slamtool::Result<()> {
             "name": hull.name,
             "lpp_m": hull.lpp,
             "depth_m": hull.depth,
-            "stations": hull.stations.len(),
+            "number_of_offset_stations": hull.stations.len(),
             "loadings": reports,
             "sensors": sensors,
         });
@@ -218,8 +218,10 @@ fn info(a: InfoArgs) -> slamtool::Result<()> {
             );
         }
     }
-    if !hull.sensors.is_empty() {
-        println!();
+    println!();
+    if hull.sensors.is_empty() {
+        println!("sensors: none in this file");
+    } else {
         println!("sensors (station = fraction of Lpp aft of the FP):");
         println!(
             "  {:<8} {:>8} {:>9} {:>8} {:>8} {:>8} {:>10}",

@@ -23,8 +23,8 @@ use super::station;
 pub const EXAMPLES: &str = "\
 Examples:
   slamtool motions hulls/ochi-vform.toml --sea sea_states/ochi-1958.toml -o reports/ochi-motions
-  slamtool motions hulls/ochi-vform.toml --sea sea_states/model-scale-jonswap.toml --loading max-draft --station 0.05,0.1
-  slamtool motions hulls/wigley-iii.toml --sea sea_states/model-scale-jonswap.toml --fn 0.2,0.3 --method lewis --json";
+  slamtool motions hulls/ochi-vform.toml --sea sea_states/ochi-1958.toml --loading max-draft
+  slamtool motions hulls/wigley-iii.toml --sea sea.toml --fn 0.2,0.3 --station 0.05,0.1 --json";
 
 #[derive(Debug, Clone, Copy, clap::ValueEnum)]
 enum Method {

@@ -88,8 +88,8 @@ pub enum SensorMethod {
     #[default]
     Interpolated,
     /// Normal force of the fluid-body pair forces on the body dummies whose contour projection lies
-    /// within the sensor's span, divided by the span (see the `sensors` module): a transducer that
-    /// measures the force on its face, consistent with the pair-force section force.
+    /// within the sensor's span, divided by the span: a transducer that measures the force on its
+    /// face, consistent with the pair-force section force.
     #[serde(alias = "force_panel")]
     ForcePanel,
 }
