@@ -13,6 +13,13 @@ use super::global::{self, JsonArg};
 use super::progress_bar;
 use super::station::StationArg;
 
+/// Examples at the end of `slamtool entry --help`.
+pub const EXAMPLES: &str = "\
+Examples:
+  slamtool entry wedge --deadrise-deg 30 --speed 5 -o out/wedge30
+  slamtool entry section hulls/ochi-vform.toml --station 0.1 --speed 2.0
+  slamtool entry case data/cases/zhao1996_wedge30_drop.toml -o out/zhao";
+
 const WEDGE_EXAMPLES: &str = "\
 Examples:
   slamtool entry wedge --deadrise-deg 30 --speed 5 -o out/wedge30

@@ -11,6 +11,13 @@ use super::global::{self, JsonArg};
 use super::hull_generate;
 use super::station::StationArg;
 
+/// Examples at the end of `slamtool hull --help`.
+pub const EXAMPLES: &str = "\
+Examples:
+  slamtool hull info hulls/ochi-vform.toml
+  slamtool hull section hulls/ochi-vform.toml --station 0.1 --loading test-condition
+  slamtool hull generate wigley-iii -o my-wigley.toml";
+
 const INFO_EXAMPLES: &str = "\
 Examples:
   slamtool hull info hulls/ochi-vform.toml

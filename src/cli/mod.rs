@@ -45,16 +45,16 @@ pub struct Cli {
 #[derive(Debug, Subcommand)]
 enum Command {
     /// Hull definition: hydrostatics, form coefficients, sections.
-    #[command(subcommand)]
+    #[command(subcommand, after_long_help = hull::EXAMPLES)]
     Hull(hull::HullCommand),
     /// One 2D water-entry run with SPH (wedge, hull section or case file).
-    #[command(subcommand)]
+    #[command(subcommand, after_long_help = entry::EXAMPLES)]
     Entry(entry::EntryCommand),
     /// SPH throughput benchmark (particle-steps per second).
     #[command(after_long_help = bench::EXAMPLES)]
     Bench(bench::BenchArgs),
     /// Sea states: regular waves, spectra, speeds.
-    #[command(subcommand)]
+    #[command(subcommand, after_long_help = sea::EXAMPLES)]
     Sea(sea::SeaCommand),
     /// Strip-theory motions, relative motion at the bow, slam statistics and operability.
     #[command(after_long_help = motions::EXAMPLES)]

@@ -8,6 +8,12 @@ use slamtool::sea::{SeaState, Speeds, encounter_frequency};
 
 use super::global::JsonArg;
 
+/// Examples at the end of `slamtool sea --help`.
+pub const EXAMPLES: &str = "\
+Examples:
+  slamtool sea info sea_states/north-atlantic-jonswap.toml
+  slamtool sea info sea_states/model-scale-jonswap.toml --lpp-m 6 --json";
+
 const INFO_EXAMPLES: &str = "\
 Examples:
   slamtool sea info sea_states/north-atlantic-jonswap.toml
