@@ -365,5 +365,11 @@ fn entry_without_a_terminal_writes_no_carriage_returns() {
     let v: serde_json::Value = serde_json::from_slice(&q.stdout).unwrap();
     assert_common_json(&v, "entry wedge");
     assert!(v["summary"]["c0_m_per_s"].as_f64().unwrap() > 0.0);
-    assert!(Path::new(&out).join("summary.json").exists());
+    let summary = std::fs::read_to_string(Path::new(&out).join("summary.json")).unwrap();
+    assert!(
+        summary.contains("\"provenance\""),
+        "summary.json has no provenance"
+    );
+    let history = std::fs::read_to_string(Path::new(&out).join("history.csv")).unwrap();
+    assert!(history.starts_with("# slamtool") && history.contains("\n# commit "));
 }

@@ -93,7 +93,7 @@ pub fn run(a: BenchArgs) -> slamtool::Result<()> {
         "final_force_n_per_m": sim.body.fz,
     });
     if a.json.json {
-        println!("{}", serde_json::to_string_pretty(&out).expect("json"));
+        global::print_json(out);
     } else {
         println!(
             "case                      30 deg wedge at 5 m/s, {a_steps} steps",

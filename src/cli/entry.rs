@@ -353,10 +353,7 @@ fn go(mut setup: sph::Setup, run: Run, name: &str) -> slamtool::Result<()> {
             "outputs": { "folder": out.display().to_string() },
             "summary": summary,
         });
-        println!(
-            "{}",
-            serde_json::to_string_pretty(&json).expect("summary serialises")
-        );
+        global::print_json(json);
         return Ok(());
     }
     let f = &summary.force.summary.raw;

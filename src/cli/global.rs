@@ -122,6 +122,16 @@ pub fn error(msg: &str) {
     eprintln!("{} {msg}", paint(ui().color_stderr, "1;31", "error:"));
 }
 
+/// Print a `--json` result on stdout: pretty-printed, numbers rounded to 10 significant digits (no
+/// `5.499999999999962` for 5.5).
+pub fn print_json(value: serde_json::Value) {
+    let tidy = slamtool::provenance::tidy_numbers(value);
+    println!(
+        "{}",
+        serde_json::to_string_pretty(&tidy).expect("a JSON value serialises")
+    );
+}
+
 /// The line every text report ends with when it wrote files.
 pub fn files_written_line(dir: &Path) -> String {
     format!("files written to {}", dir.display())

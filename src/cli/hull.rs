@@ -141,10 +141,7 @@ fn info(a: InfoArgs) -> slamtool::Result<()> {
             "loadings": reports,
             "sensors": sensors,
         });
-        println!(
-            "{}",
-            serde_json::to_string_pretty(&out).expect("serialisable")
-        );
+        global::print_json(out);
         return Ok(());
     }
     println!("{}", hull.name);
@@ -307,10 +304,7 @@ fn section(a: SectionArgs) -> slamtool::Result<()> {
             "z_from": frame,
             "points_y_z_m": points,
         });
-        println!(
-            "{}",
-            serde_json::to_string_pretty(&out).expect("serialisable")
-        );
+        global::print_json(out);
         return Ok(());
     }
     for w in &warnings {

@@ -242,10 +242,7 @@ pub fn run(a: MotionsArgs) -> Result<()> {
             "motions": report,
             "regular_slam_flags": sanity::regular_slam_flags(&report),
         });
-        println!(
-            "{}",
-            serde_json::to_string_pretty(&out).map_err(|e| Error::Invalid(e.to_string()))?
-        );
+        global::print_json(out);
     } else {
         print!(
             "{}",

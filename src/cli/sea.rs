@@ -6,7 +6,7 @@ use clap::{Args, Subcommand};
 use slamtool::provenance::{Provenance, TOOL};
 use slamtool::sea::{SeaState, Speeds, encounter_frequency};
 
-use super::global::JsonArg;
+use super::global::{self, JsonArg};
 
 /// Examples at the end of `slamtool sea --help`.
 pub const EXAMPLES: &str = "\
@@ -89,10 +89,7 @@ fn info(a: InfoArgs) -> slamtool::Result<()> {
             "regular": sea.regular,
             "irregular": irregular,
         });
-        println!(
-            "{}",
-            serde_json::to_string_pretty(&out).expect("serialisable")
-        );
+        global::print_json(out);
         return Ok(());
     }
     println!("{}", sea.name);

@@ -102,6 +102,9 @@ pub struct RunSummary {
     pub convergence: Option<ConvergenceReport>,
     pub counters: Counters,
     pub setup: Setup,
+    /// Where the run came from (tool, commit, inputs, settings), when the caller gave it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub provenance: Option<crate::provenance::Provenance>,
 }
 
 /// The outcome of [`run`]: the summary and the full histories.
@@ -152,7 +155,8 @@ pub fn run(setup: Setup, opts: &RunOptions) -> Result<RunResult> {
         }
     }
     opts.progress.finish();
-    let summary = summarise_run(&sim, wall.elapsed().as_secs_f64(), stopped.clone())?;
+    let mut summary = summarise_run(&sim, wall.elapsed().as_secs_f64(), stopped.clone())?;
+    summary.provenance = opts.provenance.clone();
     if let Some(dir) = &opts.out_dir {
         let csv = output::history_csv(&sim.history, opts.provenance.as_ref())?;
         write_text_atomic(&dir.join("history.csv"), &csv)?;
@@ -264,6 +268,7 @@ fn summarise_run(sim: &Simulation, wall_s: f64, stopped: Option<String>) -> Resu
         convergence: None,
         counters: sim.counters.clone(),
         setup: s.clone(),
+        provenance: None,
     })
 }
 
