@@ -393,12 +393,16 @@ fn go(mut setup: sph::Setup, run: Run, name: &str) -> slamtool::Result<()> {
         summary.peak_contour_pressure_s_m * 1e3
     );
     for s in &summary.sensors {
-        println!(
-            "  sensor {:8} {:.1} kPa at {:.3} ms",
-            s.name,
-            s.summary.raw.value * 1e-3,
-            s.summary.raw.time * 1e3
-        );
+        if s.summary.raw.value > 0.0 {
+            println!(
+                "  sensor {:8} {:.1} kPa at {:.3} ms",
+                s.name,
+                s.summary.raw.value * 1e-3,
+                s.summary.raw.time * 1e3
+            );
+        } else {
+            println!("  sensor {:8} not wetted during the run", s.name);
+        }
     }
     if let (Some(wf), Some(wt), Some(wp)) = (
         summary.wagner_peak_force_n_per_m,

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use clap::{Args, Subcommand};
 use slamtool::hull::{Hull, Hydrostatics, LoadingCondition, MassProperties};
 use slamtool::provenance::{Provenance, TOOL};
-use slamtool::report::sanity;
+use slamtool::report::{mass_text, sanity};
 
 use super::global::{self, JsonArg};
 use super::hull_generate;
@@ -85,15 +85,6 @@ pub fn run(c: HullCommand) -> slamtool::Result<()> {
 struct LoadingReport<'a> {
     hydrostatics: &'a Hydrostatics,
     mass: MassProperties,
-}
-
-/// A mass in kg, with tonnes beside it when it is large.
-pub fn mass_text(kg: f64) -> String {
-    if kg.abs() >= 1e4 {
-        format!("{:.1} t ({kg:.4e} kg)", kg * 1e-3)
-    } else {
-        format!("{kg:.3} kg")
-    }
 }
 
 fn info(a: InfoArgs) -> slamtool::Result<()> {

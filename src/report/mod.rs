@@ -56,6 +56,15 @@ pub fn write_csv_tables(
     Ok(written)
 }
 
+/// A mass in kg for text reports, in tonnes as well when it is large ("7070.6 t (7.0706e6 kg)").
+pub fn mass_text(kg: f64) -> String {
+    if kg.abs() >= 1e4 {
+        format!("{:.1} t ({kg:.4e} kg)", kg * 1e-3)
+    } else {
+        format!("{kg:.3} kg")
+    }
+}
+
 /// The number format of every CSV value: six significant digits after the point, exponent form.
 pub fn csv_number(v: f64) -> String {
     format!("{v:.6e}")

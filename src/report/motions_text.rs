@@ -26,15 +26,6 @@ pub fn tables(hull: &str, loading: &str, r: &Report, warnings: &[String]) -> Str
 
 // Writing to a String cannot fail, so the fmt::Result of writeln! is discarded throughout.
 
-/// A mass in kg, in tonnes as well when it is large.
-pub fn mass(kg: f64) -> String {
-    if kg.abs() >= 1e4 {
-        format!("{:.1} t ({kg:.4e} kg)", kg * 1e-3)
-    } else {
-        format!("{kg:.3} kg")
-    }
-}
-
 /// Particulars, natural periods, slam threshold, the stated limitation and the warnings.
 pub fn summary(hull: &str, loading: &str, r: &Report, warnings: &[String]) -> String {
     let mut o = String::new();
@@ -42,7 +33,7 @@ pub fn summary(hull: &str, loading: &str, r: &Report, warnings: &[String]) -> St
         o,
         "{hull}, loading '{loading}': Lpp {:.3} m, mass {}, section method {}, {} strips",
         r.lpp_m,
-        mass(r.mass_kg),
+        super::mass_text(r.mass_kg),
         r.method.name(),
         r.strip_stations
     );
