@@ -57,7 +57,7 @@ fn write_pages(cmd: &clap::Command, dir: &Path, n: &mut usize) -> slamtool::Resu
 
 /// One manual page as roff text.
 fn render(cmd: &clap::Command) -> std::io::Result<String> {
-    let man = Man::new(cmd.clone());
+    let man = Man::new(cmd.clone()).source(slamtool::provenance::TOOL);
     let mut out = Vec::new();
     man.render_title(&mut out)?;
     man.render_name_section(&mut out)?;
