@@ -46,6 +46,9 @@ pub enum Error {
     Numerical(String),
     /// A request that is well-formed but cannot be carried out with these inputs.
     Invalid(String),
+    /// The inputs are valid and the computation succeeded, but the result exceeds a design limit the user
+    /// set (the CLI exits with status 4).
+    DesignLimit(String),
 }
 
 impl Error {
@@ -64,6 +67,7 @@ impl fmt::Display for Error {
             Error::Io { path, source } => write!(f, "{}: {}", path.display(), source),
             Error::Numerical(m) => write!(f, "numerical failure: {m}"),
             Error::Invalid(m) => write!(f, "{m}"),
+            Error::DesignLimit(m) => write!(f, "design limit exceeded: {m}"),
         }
     }
 }

@@ -30,6 +30,7 @@ pub mod input;
 pub mod loads;
 pub mod numerics;
 pub mod plot;
+pub mod progress;
 pub mod provenance;
 pub mod report;
 pub mod sea;

@@ -1,5 +1,6 @@
-//! Where a result came from: tool version, the SHA-256 of every input file, and all settings. Every result
-//! file slamtool writes carries one of these (as a JSON object, or as `#` comment lines at the top of a CSV).
+//! Where a result came from: tool version, the git commit it was built from, the SHA-256 of every input
+//! file, and all settings. Every result file slamtool writes carries one of these (as a JSON object, or as
+//! `#` comment lines at the top of a CSV).
 
 use std::path::Path;
 
@@ -7,6 +8,30 @@ use serde::Serialize;
 use sha2::{Digest, Sha256};
 
 use crate::error::{Error, Result};
+
+/// "slamtool" and the version of this build.
+pub const TOOL: &str = concat!("slamtool ", env!("CARGO_PKG_VERSION"));
+
+/// The git commit this build was made from, or "unknown" (set by `build.rs`).
+pub const GIT_COMMIT: &str = env!("SLAMTOOL_GIT_COMMIT");
+
+/// Round every number in `v` to 10 significant digits, so that values computed from round inputs print
+/// as such (`0.093`, not `0.09299999999999999`).
+pub fn tidy_numbers(v: serde_json::Value) -> serde_json::Value {
+    use serde_json::Value;
+    match v {
+        Value::Number(n) if !(n.is_i64() || n.is_u64()) => n
+            .as_f64()
+            .and_then(|x| format!("{x:.9e}").parse::<f64>().ok())
+            .and_then(serde_json::Number::from_f64)
+            .map_or(Value::Number(n), Value::Number),
+        Value::Array(a) => Value::Array(a.into_iter().map(tidy_numbers).collect()),
+        Value::Object(o) => {
+            Value::Object(o.into_iter().map(|(k, x)| (k, tidy_numbers(x))).collect())
+        }
+        other => other,
+    }
+}
 
 /// One input file and its content hash.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -18,7 +43,10 @@ pub struct InputFile {
 /// Provenance of a result.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Provenance {
+    /// "slamtool" and its version.
     pub tool: String,
+    /// The git commit the tool was built from ("unknown" for a build outside a git checkout).
+    pub commit: String,
     pub inputs: Vec<InputFile>,
     pub settings: serde_json::Value,
 }
@@ -35,15 +63,16 @@ impl Provenance {
             });
         }
         Ok(Self {
-            tool: concat!("slamtool ", env!("CARGO_PKG_VERSION")).to_string(),
+            tool: TOOL.to_string(),
+            commit: GIT_COMMIT.to_string(),
             inputs: files,
-            settings,
+            settings: tidy_numbers(settings),
         })
     }
 
     /// The provenance as `# ` comment lines, for the head of a CSV file.
     pub fn csv_header(&self) -> String {
-        let mut s = format!("# {}\n", self.tool);
+        let mut s = format!("# {}\n# commit {}\n", self.tool, self.commit);
         for f in &self.inputs {
             s += &format!("# input {} sha256 {}\n", f.path, f.sha256);
         }
@@ -63,6 +92,14 @@ pub fn sha256_hex(bytes: &[u8]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn settings_lose_float_noise() {
+        let v = tidy_numbers(
+            serde_json::json!({"a": [0.1 + 0.2, 3], "b": 0.093_f64 * 1.0000000000000002}),
+        );
+        assert_eq!(v.to_string(), r#"{"a":[0.3,3],"b":0.093}"#);
+    }
 
     #[test]
     fn sha256_of_abc() {

@@ -41,13 +41,19 @@ fn slamtool(args: &[&str], dir: &Path) -> Output {
         .unwrap()
 }
 
-/// Run the CLI and require a clean failure whose message starts with `prefix`.
+/// Run the CLI and require a clean bad-input failure (status 1) whose message starts with `prefix`.
 #[track_caller]
 fn cli_fails(args: &[&str], dir: &Path, prefix: &str) {
+    cli_fails_with(args, dir, prefix, 1)
+}
+
+/// Run the CLI and require a clean failure with exit status `code` whose message starts with `prefix`.
+#[track_caller]
+fn cli_fails_with(args: &[&str], dir: &Path, prefix: &str, code: i32) {
     let out = slamtool(args, dir);
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(!out.status.success(), "{args:?} succeeded");
-    assert_eq!(out.status.code(), Some(1), "{args:?}: {err}");
+    assert_eq!(out.status.code(), Some(code), "{args:?}: {err}");
     assert!(
         err.starts_with(&format!("error: {prefix}")),
         "{args:?}: {err}"
@@ -566,8 +572,9 @@ fn cli_failures_are_clean() {
         d,
         "bad.toml:2:9: lpp_m must be",
     );
-    cli_fails(&["hull", "info", "missing.toml"], d, "missing.toml: ");
-    cli_fails(&["hull", "info", "dir.toml"], d, "dir.toml: ");
+    // A file that cannot be read is an I/O error (status 5).
+    cli_fails_with(&["hull", "info", "missing.toml"], d, "missing.toml: ", 5);
+    cli_fails_with(&["hull", "info", "dir.toml"], d, "dir.toml: ", 5);
     cli_fails(
         &["hull", "info", "h.toml", "--loading", "ballast"],
         d,
@@ -588,7 +595,7 @@ fn cli_failures_are_clean() {
             "hull",
             "section",
             "h.toml",
-            "--aft-of-fp",
+            "--station",
             "0.5",
             "--loading",
             "x",
@@ -616,7 +623,7 @@ fn cli_failures_are_clean() {
     let out = slamtool(&["hull", "info", "h.toml", "--json"], d);
     assert!(out.status.success());
     let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    let v = json["loadings"][0]["hydrostatics"]["volume"]
+    let v = json["loadings"][0]["hydrostatics"]["volume_m3"]
         .as_f64()
         .unwrap();
     assert!((v - 20.0).abs() < 1e-9);

@@ -42,11 +42,11 @@ fn motions_command_end_to_end_on_wigley3() {
             "0.2,0.3",
             "--lambda-over-l",
             "1.25",
-            "--stations",
+            "--strips",
             "21",
             "--spectrum-samples",
             "8",
-            "--at",
+            "--station",
             "0.05,0.1",
             "--json",
             "-o",
@@ -65,10 +65,12 @@ fn motions_command_end_to_end_on_wigley3() {
     let speeds = m["speeds"].as_array().unwrap();
     assert_eq!(speeds.len(), 2);
     // through the hull file: heave RAO at Fn 0.3, lambda/L 1.25 within 15 % of Journee's 1.28
-    let heave = speeds[1]["raos"][0]["heave"].as_f64().unwrap();
+    let heave = speeds[1]["raos"][0]["heave_over_wave_amplitude"]
+        .as_f64()
+        .unwrap();
     assert!((heave / 1.28 - 1.0).abs() < 0.15, "heave RAO {heave}");
     assert_eq!(m["operability"].as_array().unwrap().len(), 1);
-    let p = speeds[1]["irregular"][0]["stations"][0]["probability"]
+    let p = speeds[1]["irregular"][0]["stations"][0]["slam_probability"]
         .as_f64()
         .unwrap();
     assert!((0.0..=1.0).contains(&p));
@@ -96,6 +98,7 @@ fn motions_command_rejects_bad_arguments() {
     for bad in [
         ["--fn", "-0.2"],
         ["--lambda-over-l", "0"],
+        ["--station", "1.5"],
         ["--at", "1.5"],
         ["--loading", "nope"],
     ] {

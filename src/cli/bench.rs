@@ -2,7 +2,17 @@
 //! particles in a half tank), a fixed number of time steps.
 
 use clap::Args;
+use slamtool::provenance::{GIT_COMMIT, TOOL};
 use slamtool::sph::{self, MotionSpec, Overrides, Simulation, body::Section};
+
+use super::global::{self, JsonArg};
+
+/// Examples at the end of `slamtool bench --help`.
+pub const EXAMPLES: &str = "\
+Examples:
+  slamtool bench
+  slamtool bench --steps 50 --particles 20000
+  RAYON_NUM_THREADS=1 slamtool bench --json";
 
 #[derive(Debug, Args)]
 pub struct BenchArgs {
@@ -12,9 +22,8 @@ pub struct BenchArgs {
     /// Approximate number of fluid particles.
     #[arg(long, default_value_t = 100_000)]
     particles: u64,
-    /// Print the result as JSON.
-    #[arg(long)]
-    json: bool,
+    #[command(flatten)]
+    json: JsonArg,
 }
 
 pub fn run(a: BenchArgs) -> slamtool::Result<()> {
@@ -41,6 +50,11 @@ pub fn run(a: BenchArgs) -> slamtool::Result<()> {
             ..Default::default()
         },
     )?;
+    global::note(&format!(
+        "timing {} steps of a 30 deg wedge at 5 m/s on {} thread(s)",
+        a.steps,
+        rayon::current_num_threads()
+    ));
     let mut sim = Simulation::new(setup)?;
     let n_fluid = sim.n_fluid();
     let n_all = sim.pt.len();
@@ -54,13 +68,17 @@ pub fn run(a: BenchArgs) -> slamtool::Result<()> {
     c.interactions -= c_setup.interactions;
     let threads = rayon::current_num_threads();
     let out = serde_json::json!({
+        "tool": TOOL,
+        "provenance": {"tool": TOOL, "commit": GIT_COMMIT, "inputs": [], "settings": {"steps": a.steps, "particles": a.particles}},
+        "warnings": [],
+        "outputs": null,
         "case": "30 deg wedge, 5 m/s, half tank 4b x 3b, b = 0.25 m",
         "threads": threads,
         "steps": a.steps,
         "fluid_particles": n_fluid,
         "all_particles": n_all,
         "dp_m": sim.setup.dp,
-        "c0_m_s": sim.setup.c0,
+        "c0_m_per_s": sim.setup.c0,
         "seconds": secs,
         "fluid_particle_steps_per_s": n_fluid as f64 * a.steps as f64 / secs,
         "all_particle_steps_per_s": n_all as f64 * a.steps as f64 / secs,
@@ -74,8 +92,8 @@ pub fn run(a: BenchArgs) -> slamtool::Result<()> {
         },
         "final_force_n_per_m": sim.body.fz,
     });
-    if a.json {
-        println!("{}", serde_json::to_string_pretty(&out).expect("json"));
+    if a.json.json {
+        global::print_json(out);
     } else {
         println!(
             "case                      30 deg wedge at 5 m/s, {a_steps} steps",

@@ -1,7 +1,14 @@
-//! `slamtool completions SHELL` and `slamtool man`.
+//! `slamtool completions SHELL`.
 
 use clap::Args;
 use clap_complete::Shell;
+
+/// Examples at the end of `slamtool completions --help`.
+pub const EXAMPLES: &str = "\
+Examples:
+  slamtool completions bash > ~/.local/share/bash-completion/completions/slamtool
+  slamtool completions zsh > ~/.zfunc/_slamtool
+  slamtool completions fish > ~/.config/fish/completions/slamtool.fish";
 
 #[derive(Debug, Args)]
 pub struct CompletionsArgs {
@@ -12,10 +19,4 @@ pub struct CompletionsArgs {
 pub fn run(args: CompletionsArgs, cmd: &mut clap::Command) -> slamtool::Result<()> {
     clap_complete::generate(args.shell, cmd, "slamtool", &mut std::io::stdout());
     Ok(())
-}
-
-pub fn man(cmd: &clap::Command) -> slamtool::Result<()> {
-    clap_mangen::Man::new(cmd.clone())
-        .render(&mut std::io::stdout())
-        .map_err(|e| slamtool::Error::io(std::path::Path::new("<stdout>"), e))
 }

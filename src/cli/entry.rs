@@ -3,18 +3,51 @@
 use std::path::PathBuf;
 
 use clap::{Args, Subcommand};
+use slamtool::provenance::{Provenance, TOOL};
 use slamtool::sph::{
     self, Level, MotionSpec, Overrides, RunOptions, RunResult, SensorMethod, SensorSpec,
     body::Section,
 };
 
+use super::global::{self, JsonArg};
+use super::progress_bar;
+use super::station::StationArg;
+
+/// Examples at the end of `slamtool entry --help`.
+pub const EXAMPLES: &str = "\
+Examples:
+  slamtool entry wedge --deadrise-deg 30 --speed 5 -o out/wedge30
+  slamtool entry section hulls/ochi-vform.toml --station 0.1 --speed 2.0
+  slamtool entry case data/cases/zhao1996_wedge30_drop.toml -o out/zhao";
+
+const WEDGE_EXAMPLES: &str = "\
+Examples:
+  slamtool entry wedge --deadrise-deg 30 --speed 5 -o out/wedge30
+  slamtool entry wedge --deadrise-deg 20 --speed 3 --resolution medium --convergence-levels 3
+  slamtool entry wedge --deadrise-deg 30 --speed 5 --convergence-levels 1 --frames 0 --json";
+
+const SECTION_EXAMPLES: &str = "\
+Examples:
+  slamtool entry section hulls/ochi-vform.toml --station 0.1 --speed 2.0 -o out/ochi-st0.1
+  slamtool entry section hulls/car-carrier-hm2005.toml --station 0.05 --speed 3 --dp 0.002
+  slamtool entry section hulls/ochi-vform.toml --x-m 2.4 --speed 1.5 --json";
+
+const CASE_EXAMPLES: &str = "\
+Examples:
+  slamtool entry case data/cases/zhao1996_wedge30_drop.toml -o out/zhao
+  slamtool entry case my-case.toml --filter-hz 2000 --frames 0
+  slamtool entry case my-case.toml --convergence-levels 1 --json > summary.json";
+
 #[derive(Debug, Subcommand)]
 pub enum EntryCommand {
     /// A wedge entering calm water at constant speed.
+    #[command(after_long_help = WEDGE_EXAMPLES)]
     Wedge(WedgeArgs),
     /// A case file (TOML) with full control of section, motion, resolution and numerics.
+    #[command(after_long_help = CASE_EXAMPLES)]
     Case(CaseArgs),
     /// A hull section (from a hull file) entering calm water at constant speed, keel first.
+    #[command(after_long_help = SECTION_EXAMPLES)]
     Section(SectionArgs),
 }
 
@@ -22,43 +55,44 @@ pub enum EntryCommand {
 pub struct SectionArgs {
     /// The hull file.
     hull: PathBuf,
-    /// Station as a fraction of Lpp aft of the forward perpendicular (0.1 is x = 0.4 Lpp).
-    #[arg(long, conflicts_with = "x")]
-    station: Option<f64>,
-    /// Station as x (m from midship, positive forward).
-    #[arg(long)]
-    x: Option<f64>,
+    #[command(flatten)]
+    station: StationArg,
     /// Constant entry speed (m/s).
     #[arg(long)]
     speed: f64,
     #[command(flatten)]
+    numerics: Numerics,
+    #[command(flatten)]
     common: Common,
 }
 
-/// Options shared by every entry run.
+/// Resolution and domain of a wedge or section run (a case file sets these itself).
 #[derive(Debug, Args)]
-pub struct Common {
-    /// Resolution level (particles across the largest half-breadth: coarse 40, medium 80, fine 160).
-    #[arg(long, value_enum)]
-    resolution: Option<Level>,
+pub struct Numerics {
+    /// Resolution level: particles across the largest half-breadth.
+    #[arg(long, value_enum, default_value = "coarse")]
+    resolution: Level,
     /// Particle spacing (m); overrides --resolution.
     #[arg(long)]
     dp: Option<f64>,
-    /// Sound speed (m/s); default from the expected peak pressure.
+    /// Sound speed (m/s) [default: from the expected peak pressure].
     #[arg(long)]
     c0: Option<f64>,
-    /// End time (s); default when the keel reaches the chine depth.
+    /// End time (s) [default: when the keel reaches the chine depth].
     #[arg(long)]
     t_end: Option<f64>,
     /// Whole tank instead of a half tank with a symmetry plane.
     #[arg(long)]
     full_domain: bool,
-    /// Cut-off (Hz) of the zero-phase low-pass filter for the reported filtered peaks.
+}
+
+/// Options shared by every entry run.
+#[derive(Debug, Args)]
+pub struct Common {
+    /// Cut-off (Hz) of the zero-phase low-pass filter for the reported filtered peaks [default: none].
     #[arg(long)]
     filter_hz: Option<f64>,
-    /// How the sensor pressures are computed: interpolated (wall pressure extrapolated from the fluid,
-    /// averaged over the sensor width; default) or force-panel (fluid-body pair forces on the sensor's
-    /// face divided by its width).
+    /// How the sensor pressures are computed [default: interpolated, or the case file's choice].
     #[arg(long, value_enum)]
     sensor_method: Option<SensorMethod>,
     /// Resolutions run for the convergence statement of every peak, the requested one included: 2 adds a
@@ -69,12 +103,11 @@ pub struct Common {
     /// Number of particle snapshots (VTK and PNG) over the run; 0 for none.
     #[arg(long, default_value_t = 10)]
     frames: u32,
-    /// Output folder.
-    #[arg(short, long)]
+    /// Output folder [default: out/<case name>, printed at the end].
+    #[arg(short, long, value_name = "DIR")]
     out: Option<PathBuf>,
-    /// Print the run summary as JSON on stdout.
-    #[arg(long)]
-    json: bool,
+    #[command(flatten)]
+    json: JsonArg,
     /// Run even when the estimated wall time exceeds the one-hour bound.
     #[arg(long)]
     force: bool,
@@ -95,6 +128,8 @@ pub struct WedgeArgs {
     #[arg(long, default_value_t = 0.005)]
     sensor_width: f64,
     #[command(flatten)]
+    numerics: Numerics,
+    #[command(flatten)]
     common: Common,
 }
 
@@ -114,17 +149,35 @@ pub fn run(c: EntryCommand) -> slamtool::Result<()> {
     }
 }
 
-fn overrides(c: &Common) -> Overrides {
+fn overrides(n: &Numerics, c: &Common) -> Overrides {
     Overrides {
-        level: c.resolution,
-        dp: c.dp,
-        c0: c.c0,
-        t_end: c.t_end,
-        mirror: c.full_domain.then_some(false),
+        level: Some(n.resolution),
+        dp: n.dp,
+        c0: n.c0,
+        t_end: n.t_end,
+        mirror: n.full_domain.then_some(false),
         filter_cutoff_hz: c.filter_hz,
         sensor_method: c.sensor_method,
         ..Default::default()
     }
+}
+
+/// The settings of a run as given on the command line, for its provenance.
+fn settings(n: Option<&Numerics>, c: &Common) -> serde_json::Value {
+    let mut v = serde_json::json!({
+        "filter_hz": c.filter_hz,
+        "sensor_method": c.sensor_method,
+        "convergence_levels": c.convergence_levels,
+        "frames": c.frames,
+    });
+    if let Some(n) = n {
+        v["resolution"] = serde_json::json!(n.resolution);
+        v["dp_m"] = serde_json::json!(n.dp);
+        v["c0_m_per_s"] = serde_json::json!(n.c0);
+        v["t_end_s"] = serde_json::json!(n.t_end);
+        v["full_domain"] = serde_json::json!(n.full_domain);
+    }
+    v
 }
 
 fn wedge(a: WedgeArgs) -> slamtool::Result<()> {
@@ -159,7 +212,26 @@ fn wedge(a: WedgeArgs) -> slamtool::Result<()> {
         })
         .collect();
     let name = format!("wedge_{}deg_{}ms", a.deadrise_deg, a.speed);
-    constant_speed(&name, &section, a.speed, sensors, &a.common)
+    let mut set = settings(Some(&a.numerics), &a.common);
+    set["deadrise_deg"] = serde_json::json!(a.deadrise_deg);
+    set["speed_m_per_s"] = serde_json::json!(a.speed);
+    set["half_beam_m"] = serde_json::json!(a.half_beam);
+    set["sensor_width_m"] = serde_json::json!(a.sensor_width);
+    let prov = Provenance::new(&[], set)?;
+    let run = Run {
+        common: &a.common,
+        prov,
+        warnings: Vec::new(),
+    };
+    constant_speed(&name, &section, a.speed, sensors, &a.numerics, run)
+}
+
+/// What every entry run carries besides its setup: the shared options, provenance and warnings found
+/// before the run.
+struct Run<'a> {
+    common: &'a Common,
+    prov: Provenance,
+    warnings: Vec<String>,
 }
 
 /// Resolve and run a constant-speed entry of `section`.
@@ -168,16 +240,17 @@ fn constant_speed(
     section: &Section,
     speed: f64,
     sensors: Vec<SensorSpec>,
-    common: &Common,
+    numerics: &Numerics,
+    run: Run,
 ) -> slamtool::Result<()> {
     let setup = sph::case::resolve(
         name,
         section,
         &MotionSpec::Constant { speed_m_s: speed },
         sensors,
-        &overrides(common),
+        &overrides(numerics, run.common),
     )?;
-    go(setup, common, name)
+    go(setup, run, name)
 }
 
 fn hull_section(a: SectionArgs) -> slamtool::Result<()> {
@@ -188,15 +261,8 @@ fn hull_section(a: SectionArgs) -> slamtool::Result<()> {
         )));
     }
     let hull = slamtool::hull::Hull::from_file(&a.hull)?;
-    let x = match (a.station, a.x) {
-        (Some(f), None) => hull.station_x(f),
-        (None, Some(x)) => x,
-        _ => {
-            return Err(slamtool::Error::Invalid(
-                "give the station as --station (fraction of Lpp aft of the FP) or --x (m from midship)".into(),
-            ));
-        }
-    };
+    let st = a.station.resolve(&hull)?;
+    let x = st.x;
     let hs = hull.section_at(x)?;
     let section = Section::from_half_points(hs.points.clone())?;
     // Hull sensors on this station: girth from the keel and physical diameter.
@@ -215,34 +281,39 @@ fn hull_section(a: SectionArgs) -> slamtool::Result<()> {
         .file_stem()
         .map_or("hull".into(), |s| s.to_string_lossy().into_owned());
     let name = format!("{stem}_x{x:.3}m_{}ms", a.speed);
-    constant_speed(&name, &section, a.speed, sensors, &a.common)
+    let mut set = settings(Some(&a.numerics), &a.common);
+    set["x_m"] = serde_json::json!(x);
+    set["station"] = serde_json::json!(hull.aft_of_fp(x));
+    set["speed_m_per_s"] = serde_json::json!(a.speed);
+    let run = Run {
+        common: &a.common,
+        prov: Provenance::new(&hull.input_files(), set)?,
+        warnings: st.warning.into_iter().collect(),
+    };
+    constant_speed(&name, &section, a.speed, sensors, &a.numerics, run)
 }
 
 fn case(a: CaseArgs) -> slamtool::Result<()> {
     let mut setup = sph::case::from_file(&a.file)?;
-    let o = overrides(&a.common);
-    // Command-line options take precedence over the file for the few they share.
-    if o.dp.is_some()
-        || o.c0.is_some()
-        || o.level.is_some()
-        || o.mirror.is_some()
-        || o.t_end.is_some()
-    {
-        return Err(slamtool::Error::Invalid(
-            "with a case file, set resolution, c0, t_end and the domain in the file".into(),
-        ));
-    }
-    if let Some(f) = o.filter_cutoff_hz {
+    // Command-line options take precedence over the file for the few they share; resolution, c0, t_end
+    // and the domain are set in the file only.
+    if let Some(f) = a.common.filter_hz {
         setup.filter_cutoff_hz = Some(f);
     }
-    if let Some(m) = o.sensor_method {
+    if let Some(m) = a.common.sensor_method {
         setup.sensor_method = m;
     }
     let name = setup.name.clone();
-    go(setup, &a.common, &name)
+    let run = Run {
+        common: &a.common,
+        prov: Provenance::new(&[a.file.as_path()], settings(None, &a.common))?,
+        warnings: Vec::new(),
+    };
+    go(setup, run, &name)
 }
 
-fn go(mut setup: sph::Setup, c: &Common, name: &str) -> slamtool::Result<()> {
+fn go(mut setup: sph::Setup, run: Run, name: &str) -> slamtool::Result<()> {
+    let c = run.common;
     let out = c
         .out
         .clone()
@@ -255,36 +326,43 @@ fn go(mut setup: sph::Setup, c: &Common, name: &str) -> slamtool::Result<()> {
         ..Default::default()
     };
     let cost = sph::cost::estimate(&setup, plan, rayon::current_num_threads());
-    eprintln!(
+    global::note(&format!(
         "{name}: dp {:.2} mm, c0 {:.1} m/s, t_end {:.2} ms; {}",
         setup.dp * 1e3,
         setup.c0,
         setup.t_end * 1e3,
         cost.describe()
-    );
+    ));
     sph::cost::check(&cost, c.force)?;
     let cleared = sph::output_dir::prepare(&out)?;
     if cleared > 0 {
-        eprintln!(
+        global::note(&format!(
             "removed {cleared} output(s) of an earlier run from {}",
             out.display()
-        );
+        ));
     }
     let opts = RunOptions {
         out_dir: Some(out.clone()),
-        progress: true,
+        progress: progress_bar::handle(),
         vtk: c.frames > 0,
         png: c.frames > 0,
+        provenance: Some(run.prov.clone()),
     };
     let RunResult { summary, .. } = sph::run_with_convergence(setup, &opts, plan)?;
-    for w in &summary.warnings {
-        eprintln!("warning: {w}");
-    }
-    if c.json {
-        println!(
-            "{}",
-            serde_json::to_string_pretty(&summary).expect("summary serialises")
-        );
+    let mut warnings = run.warnings;
+    warnings.extend(summary.warnings.iter().cloned());
+    if c.json.json {
+        for w in &warnings {
+            global::warn_stderr(w);
+        }
+        let json = serde_json::json!({
+            "tool": TOOL,
+            "provenance": run.prov,
+            "warnings": warnings,
+            "outputs": { "folder": out.display().to_string() },
+            "summary": summary,
+        });
+        global::print_json(json);
         return Ok(());
     }
     let f = &summary.force.summary.raw;
@@ -330,12 +408,16 @@ fn go(mut setup: sph::Setup, c: &Common, name: &str) -> slamtool::Result<()> {
             .map_or(String::new(), |sp| {
                 format!(" (integrated over {:.1} mm)", (sp[1] - sp[0]) * 1e3)
             });
-        println!(
-            "  sensor {:8} {:.1} kPa at {:.3} ms{span}",
-            s.name,
-            s.summary.raw.value * 1e-3,
-            s.summary.raw.time * 1e3
-        );
+        if s.summary.raw.value > 0.0 {
+            println!(
+                "  sensor {:8} {:.1} kPa at {:.3} ms{span}",
+                s.name,
+                s.summary.raw.value * 1e-3,
+                s.summary.raw.time * 1e3
+            );
+        } else {
+            println!("  sensor {:8} not wetted during the run", s.name);
+        }
     }
     println!(
         "contact transient (keel less than {} dp deep, up to {:.3} ms; acoustic, not a slamming load): \
@@ -376,6 +458,9 @@ fn go(mut setup: sph::Setup, c: &Common, name: &str) -> slamtool::Result<()> {
             println!("  {}", p.statement);
         }
     }
-    println!("outputs in      {}", out.display());
+    for w in &warnings {
+        println!("{}", global::warning_line(w));
+    }
+    println!("{}", global::files_written_line(&out));
     Ok(())
 }

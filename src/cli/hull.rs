@@ -3,19 +3,51 @@
 use std::path::PathBuf;
 
 use clap::{Args, Subcommand};
-use slamtool::hull::{Hull, Hydrostatics, MassProperties};
+use slamtool::hull::{Hull, Hydrostatics, LoadingCondition, MassProperties};
+use slamtool::provenance::{Provenance, TOOL};
+use slamtool::report::{mass_text, sanity};
 
+use super::global::{self, JsonArg};
 use super::hull_generate;
 use super::hull_import;
 use super::hull_plot;
+use super::station::StationArg;
+
+/// Examples at the end of `slamtool hull --help`.
+pub const EXAMPLES: &str = "\
+Examples:
+  slamtool hull info hulls/ochi-vform.toml
+  slamtool hull section hulls/ochi-vform.toml --station 0.1 --loading test-condition
+  slamtool hull generate wigley-iii -o my-wigley.toml";
+
+const INFO_EXAMPLES: &str = "\
+Examples:
+  slamtool hull info hulls/ochi-vform.toml
+  slamtool hull info hulls/ochi-vform.toml --loading max-draft
+  slamtool hull info hulls/wigley-iii.toml --json > wigley.json";
+
+const SECTION_EXAMPLES: &str = "\
+Examples:
+  slamtool hull section hulls/ochi-vform.toml --station 0.1 > section.csv
+  slamtool hull section hulls/ochi-vform.toml --x-m -1.2 --loading test-condition
+  slamtool hull section hulls/car-carrier-hm2005.toml --station 0.05 --json";
+
+const GENERATE_EXAMPLES: &str = "\
+Examples:
+  slamtool hull generate ochi-vform -o hulls/ochi-vform.toml
+  slamtool hull generate wigley-iii > my-wigley.toml
+  slamtool hull generate car-carrier -o car-carrier.toml";
 
 #[derive(Debug, Subcommand)]
 pub enum HullCommand {
     /// Hydrostatics, form coefficients and mass properties at each loading condition.
+    #[command(after_long_help = INFO_EXAMPLES)]
     Info(InfoArgs),
     /// The section contour at any station, relative to the baseline or to the local waterline (CSV).
+    #[command(after_long_help = SECTION_EXAMPLES)]
     Section(SectionArgs),
     /// Write one of the example/reference hulls (hulls/*.toml) from its generator.
+    #[command(after_long_help = GENERATE_EXAMPLES)]
     Generate(hull_generate::GenerateArgs),
     /// Import a hull from an offsets grid (CSV) or a closed surface (STL).
     Import(hull_import::ImportArgs),
@@ -27,32 +59,24 @@ pub enum HullCommand {
 pub struct InfoArgs {
     /// Hull file (hull.toml).
     file: PathBuf,
-    /// Only this loading condition (default: all).
+    /// Only this loading condition [default: all].
     #[arg(long)]
     loading: Option<String>,
-    /// Print JSON instead of tables.
-    #[arg(long)]
-    json: bool,
+    #[command(flatten)]
+    json: JsonArg,
 }
 
 #[derive(Debug, Args)]
 pub struct SectionArgs {
     /// Hull file (hull.toml).
     file: PathBuf,
-    /// Station as a fraction of Lpp aft of the forward perpendicular.
-    #[arg(
-        long,
-        conflicts_with = "x_m",
-        required_unless_present = "x_m",
-        allow_negative_numbers = true
-    )]
-    aft_of_fp: Option<f64>,
-    /// Station as x in m from midship (positive forward; aft of midship is negative, e.g. --x-m -1.2).
-    #[arg(long, allow_negative_numbers = true)]
-    x_m: Option<f64>,
-    /// Give z relative to the local waterline of this loading condition (default: above baseline).
+    #[command(flatten)]
+    station: StationArg,
+    /// Give z relative to the local waterline of this loading condition [default: z above baseline].
     #[arg(long)]
     loading: Option<String>,
+    #[command(flatten)]
+    json: JsonArg,
 }
 
 pub fn run(c: HullCommand) -> slamtool::Result<()> {
@@ -73,7 +97,7 @@ struct LoadingReport<'a> {
 
 fn info(a: InfoArgs) -> slamtool::Result<()> {
     let hull = Hull::from_file(&a.file)?;
-    let loadings: Vec<_> = match &a.loading {
+    let loadings: Vec<&LoadingCondition> = match &a.loading {
         Some(n) => vec![hull.loading(Some(n))?],
         None => hull.loadings.iter().collect(),
     };
@@ -81,7 +105,8 @@ fn info(a: InfoArgs) -> slamtool::Result<()> {
         .iter()
         .map(|l| Hydrostatics::compute(&hull, l))
         .collect();
-    if a.json {
+    let warnings: Vec<String> = hs.iter().flat_map(sanity::negative_gm).collect();
+    if a.json.json {
         let reports: Vec<LoadingReport> = hs
             .iter()
             .zip(&loadings)
@@ -94,24 +119,28 @@ fn info(a: InfoArgs) -> slamtool::Result<()> {
             .sensors
             .iter()
             .map(|s| {
-                serde_json::json!({"name": s.name, "x_m": s.x, "aft_of_fp": hull.aft_of_fp(s.x),
+                serde_json::json!({"name": s.name, "x_m": s.x, "station": hull.aft_of_fp(s.x),
                 "girth_m": s.girth, "y_m": s.position[0], "z_m": s.position[1], "diameter_m": s.diameter})
             })
             .collect();
+        let prov = Provenance::new(
+            &hull.input_files(),
+            serde_json::json!({ "loading": a.loading }),
+        )?;
         let out = serde_json::json!({
-            "tool": concat!("slamtool ", env!("CARGO_PKG_VERSION")),
+            "tool": TOOL,
+            "provenance": prov,
+            "warnings": warnings,
+            "outputs": null,
             "file": a.file.display().to_string(),
             "name": hull.name,
             "lpp_m": hull.lpp,
             "depth_m": hull.depth,
-            "stations": hull.stations.len(),
+            "number_of_offset_stations": hull.stations.len(),
             "loadings": reports,
             "sensors": sensors,
         });
-        println!(
-            "{}",
-            serde_json::to_string_pretty(&out).expect("serialisable")
-        );
+        global::print_json(out);
         return Ok(());
     }
     println!("{}", hull.name);
@@ -135,10 +164,7 @@ fn info(a: InfoArgs) -> slamtool::Result<()> {
         row("trim by stern", &format!("{} m", fx(h.trim_by_stern_m, 4)));
         row("water density", &format!("{:.1} kg/m3", h.rho_kg_m3));
         row("volume", &format!("{:.6} m3", h.volume));
-        row(
-            "displacement (buoyancy)",
-            &format!("{:.3} kg", h.displacement_kg),
-        );
+        row("displacement (buoyancy)", &mass_text(h.displacement_kg));
         row("LCB (from midship, +fwd)", &format!("{} m", fx(h.lcb, 4)));
         row("KB", &format!("{:.4} m", h.kb));
         row("waterplane area", &format!("{:.5} m2", h.awp));
@@ -155,8 +181,8 @@ fn info(a: InfoArgs) -> slamtool::Result<()> {
         row(
             "mass",
             &format!(
-                "{:.3} kg{}",
-                m.mass_kg,
+                "{}{}",
+                mass_text(m.mass_kg),
                 note(m.mass_from_buoyancy, "from buoyancy")
             ),
         );
@@ -179,10 +205,14 @@ fn info(a: InfoArgs) -> slamtool::Result<()> {
             "k_yy",
             &format!("{:.4} m ({:.3} Lpp)", m.k_yy_m, m.k_yy_m / hull.lpp),
         );
-        println!("  sectional-area curve (x m, aft_of_fp, draft m, area m2, half-breadth m):");
+        println!("  sectional-area curve:");
+        println!(
+            "    {:>9} {:>9} {:>8} {:>10} {:>14}",
+            "x_m", "station", "draft_m", "area_m2", "half_breadth_m"
+        );
         for s in &h.sectional_area {
             println!(
-                "    {:>9.4} {:>7.4} {:>8.4} {:>10.6} {:>8.4}",
+                "    {:>9.4} {:>9.4} {:>8.4} {:>10.6} {:>14.4}",
                 s.x_m,
                 hull.aft_of_fp(s.x_m),
                 s.draft_m,
@@ -191,12 +221,18 @@ fn info(a: InfoArgs) -> slamtool::Result<()> {
             );
         }
     }
-    if !hull.sensors.is_empty() {
-        println!();
-        println!("sensors (name, aft_of_fp, x m, girth m, y m, z m, diameter m):");
+    println!();
+    if hull.sensors.is_empty() {
+        println!("sensors: none in this file");
+    } else {
+        println!("sensors (station = fraction of Lpp aft of the FP):");
+        println!(
+            "  {:<8} {:>8} {:>9} {:>8} {:>8} {:>8} {:>10}",
+            "name", "station", "x_m", "girth_m", "y_m", "z_m", "diameter_m"
+        );
         for s in &hull.sensors {
             println!(
-                "  {:<8} {:>7.4} {:>9.4} {:>8.4} {:>8.4} {:>8.4} {:>7.4}",
+                "  {:<8} {:>8.4} {:>9.4} {:>8.4} {:>8.4} {:>8.4} {:>10.4}",
                 s.name,
                 hull.aft_of_fp(s.x),
                 s.x,
@@ -206,6 +242,9 @@ fn info(a: InfoArgs) -> slamtool::Result<()> {
                 s.diameter
             );
         }
+    }
+    for w in &warnings {
+        println!("{}", global::warning_line(w));
     }
     Ok(())
 }
@@ -225,19 +264,11 @@ fn row(label: &str, value: &str) {
 
 fn section(a: SectionArgs) -> slamtool::Result<()> {
     let hull = Hull::from_file(&a.file)?;
-    let (x, given) = match (a.x_m, a.aft_of_fp) {
-        (Some(x), _) => (x, format!("--x-m {x}")),
-        (None, Some(f)) => (hull.station_x(f), format!("--aft-of-fp {f}")),
-        (None, None) => unreachable!("clap requires one of them"),
-    };
-    if !x.is_finite() {
-        return Err(slamtool::Error::Invalid(format!(
-            "{given}: the station must be a finite number"
-        )));
-    }
+    let st = a.station.resolve(&hull)?;
+    let x = st.x;
     let sec = hull
         .section_at(x)
-        .map_err(|e| slamtool::Error::Invalid(format!("{given}: {e}")))?;
+        .map_err(|e| slamtool::Error::Invalid(format!("{}: {e}", st.given)))?;
     let (sec, frame) = match &a.loading {
         Some(n) => {
             let l = hull.loading(Some(n))?;
@@ -249,16 +280,51 @@ fn section(a: SectionArgs) -> slamtool::Result<()> {
         }
         None => (sec, "z above baseline".to_string()),
     };
-    println!(
-        "# {} at x = {:.4} m ({:.4} Lpp aft of FP); {frame}",
+    let warnings: Vec<String> = st.warning.into_iter().collect();
+    let settings = serde_json::json!({
+        "x_m": x, "station": hull.aft_of_fp(x), "loading": a.loading, "z_from": frame,
+    });
+    let prov = Provenance::new(&hull.input_files(), settings)?;
+    // `+ 0.0` turns -0 into 0 so that no "-0.000000" appears
+    let points: Vec<[f64; 2]> = sec
+        .points
+        .iter()
+        .map(|p| [p[0] + 0.0, p[1] + 0.0])
+        .collect();
+    if a.json.json {
+        let out = serde_json::json!({
+            "tool": TOOL,
+            "provenance": prov,
+            "warnings": warnings,
+            "outputs": null,
+            "hull": hull.name,
+            "x_m": x + 0.0,
+            "station": hull.aft_of_fp(x) + 0.0,
+            "z_from": frame,
+            "points_y_z_m": points,
+        });
+        global::print_json(out);
+        return Ok(());
+    }
+    for w in &warnings {
+        global::warn_stderr(w);
+    }
+    let rows = points
+        .iter()
+        .map(|p| vec![format!("{:.6}", p[0]), format!("{:.6}", p[1])])
+        .collect();
+    let table = slamtool::report::CsvTable {
+        file_name: "section.csv",
+        header: &["y_m", "z_m"],
+        notes: Vec::new(),
+        rows,
+    };
+    print!(
+        "# {} at x = {:.4} m (station {:.4}, fraction of Lpp aft of the FP); {frame}\n{}",
         hull.name,
         x + 0.0,
-        hull.aft_of_fp(x) + 0.0
+        hull.aft_of_fp(x) + 0.0,
+        table.to_text(&prov)?
     );
-    println!("y_m,z_m");
-    for p in &sec.points {
-        // `+ 0.0` turns −0 into 0 so that no "-0.000000" appears
-        println!("{:.6},{:.6}", p[0] + 0.0, p[1] + 0.0);
-    }
     Ok(())
 }

@@ -1,4 +1,4 @@
-//! `slamtool hull generate <hull> [-o FILE]`: write one of the example/reference hulls.
+//! `slamtool hull generate <hull> [-o/--out FILE]`: write one of the example/reference hulls.
 
 use std::path::PathBuf;
 
@@ -33,16 +33,16 @@ pub struct GenerateArgs {
     #[arg(value_enum)]
     pub hull: HullName,
     /// Output file (written atomically); the hull TOML goes to standard output without it.
-    #[arg(short, long, value_name = "FILE")]
-    pub output: Option<PathBuf>,
+    #[arg(short, long, value_name = "FILE", alias = "output")]
+    pub out: Option<PathBuf>,
 }
 
 pub fn run(args: GenerateArgs) -> slamtool::Result<()> {
     let text = GeneratedHull::from(args.hull).toml()?;
-    match args.output {
+    match args.out {
         Some(path) => {
             slamtool::files::write_text_atomic(&path, &text)?;
-            eprintln!("wrote {}", path.display());
+            println!("hull file written to {}", path.display());
         }
         None => print!("{text}"),
     }

@@ -1,23 +1,45 @@
-//! clap command definitions; one file per command family.
+//! clap command definitions; one file per command family, plus the pieces every command shares:
+//! [`global`] (quiet, colour, `--json`, notes and warnings), [`exit`] (exit statuses), [`progress_bar`]
+//! (progress bars) and [`station`] (how a station is given).
 
 use std::process::ExitCode;
 
-use clap::{CommandFactory, Parser, Subcommand};
+use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 
 mod bench;
 mod completions;
 mod entry;
+pub mod exit;
+pub mod global;
 mod hull;
 mod hull_generate;
 mod hull_import;
 mod hull_plot;
+mod man;
 mod motions;
+pub mod progress_bar;
 mod sea;
+pub mod station;
+
+/// Examples at the end of `slamtool --help`, followed there by the exit statuses.
+const TOP_EXAMPLES: &str = "\
+Examples:
+  slamtool hull info hulls/ochi-vform.toml --loading test-condition
+  slamtool motions hulls/ochi-vform.toml --sea sea_states/ochi-1958.toml -o reports/ochi-motions
+  slamtool entry wedge --deadrise-deg 30 --speed 5 -o out/wedge30";
 
 /// 2D+t ship-slamming design tool: strip theory, SPH water entry, analytic cross-checks, design reports.
 #[derive(Debug, Parser)]
-#[command(name = "slamtool", version, about, long_about = None, propagate_version = true)]
+#[command(
+    name = "slamtool",
+    version,
+    about,
+    long_about = None,
+    propagate_version = true
+)]
 pub struct Cli {
+    #[command(flatten)]
+    global: global::GlobalArgs,
     #[command(subcommand)]
     command: Command,
 }
@@ -25,40 +47,87 @@ pub struct Cli {
 #[derive(Debug, Subcommand)]
 enum Command {
     /// Hull definition: hydrostatics, form coefficients, sections.
-    #[command(subcommand)]
+    #[command(subcommand, after_long_help = hull::EXAMPLES)]
     Hull(hull::HullCommand),
     /// One 2D water-entry run with SPH (wedge, hull section or case file).
-    #[command(subcommand)]
+    #[command(subcommand, after_long_help = entry::EXAMPLES)]
     Entry(entry::EntryCommand),
     /// SPH throughput benchmark (particle-steps per second).
+    #[command(after_long_help = bench::EXAMPLES)]
     Bench(bench::BenchArgs),
     /// Sea states: regular waves, spectra, speeds.
-    #[command(subcommand)]
+    #[command(subcommand, after_long_help = sea::EXAMPLES)]
     Sea(sea::SeaCommand),
     /// Strip-theory motions, relative motion at the bow, slam statistics and operability.
+    #[command(after_long_help = motions::EXAMPLES)]
     Motions(motions::MotionsArgs),
     /// Print a shell completion script.
+    #[command(after_long_help = completions::EXAMPLES)]
     Completions(completions::CompletionsArgs),
-    /// Print the manual page (roff) on stdout.
-    Man,
+    /// Manual pages: the top page on stdout, or one page per command into a folder.
+    #[command(after_long_help = man::EXAMPLES)]
+    Man(man::ManArgs),
+}
+
+/// The `--color` value given on the command line, read before parsing so that clap's own help and usage
+/// errors follow it too.
+fn color_choice() -> clap::ColorChoice {
+    let args: Vec<String> = std::env::args().collect();
+    let mut value = None;
+    for (i, a) in args.iter().enumerate() {
+        if a == "--" {
+            break;
+        }
+        if let Some(v) = a.strip_prefix("--color=") {
+            value = Some(v.to_string());
+        } else if a == "--color" {
+            value = args.get(i + 1).cloned();
+        }
+    }
+    match value.as_deref() {
+        Some("always") => clap::ColorChoice::Always,
+        Some("never") => clap::ColorChoice::Never,
+        _ => clap::ColorChoice::Auto,
+    }
+}
+
+/// The command tree, with the examples and exit statuses at the end of the top-level help.
+pub fn command() -> clap::Command {
+    Cli::command().after_long_help(format!("{TOP_EXAMPLES}\n\n{}", exit::TABLE))
 }
 
 pub fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let parsed = command()
+        .color(color_choice())
+        .try_get_matches()
+        .and_then(|m| Cli::from_arg_matches(&m));
+    let cli = match parsed {
+        Ok(c) => c,
+        // --help and --version come here too: they print on stdout and succeed.
+        Err(e) => {
+            let _ = e.print();
+            return ExitCode::from(if e.use_stderr() {
+                exit::USAGE
+            } else {
+                exit::OK
+            });
+        }
+    };
+    global::init(&cli.global);
     let result = match cli.command {
         Command::Hull(c) => hull::run(c),
         Command::Entry(c) => entry::run(c),
         Command::Bench(a) => bench::run(a),
         Command::Sea(c) => sea::run(c),
         Command::Motions(a) => motions::run(a),
-        Command::Completions(a) => completions::run(a, &mut Cli::command()),
-        Command::Man => completions::man(&Cli::command()),
+        Command::Completions(a) => completions::run(a, &mut command()),
+        Command::Man(a) => man::run(a, command()),
     };
     match result {
-        Ok(()) => ExitCode::SUCCESS,
+        Ok(()) => ExitCode::from(exit::OK),
         Err(e) => {
-            eprintln!("error: {e}");
-            ExitCode::FAILURE
+            global::error(&e.to_string());
+            ExitCode::from(exit::code(&e))
         }
     }
 }

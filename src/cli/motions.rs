@@ -6,9 +6,9 @@
 use std::path::PathBuf;
 
 use clap::Args;
-use slamtool::hull::Hull;
-use slamtool::provenance::Provenance;
-use slamtool::report;
+use slamtool::hull::{Hull, Hydrostatics};
+use slamtool::provenance::{Provenance, TOOL};
+use slamtool::report::{self, sanity};
 use slamtool::sea::SeaState;
 use slamtool::seakeeping::ShipModel;
 use slamtool::seakeeping::analysis::{self, Request, Station};
@@ -16,9 +16,19 @@ use slamtool::seakeeping::section::{HalfSection, SectionMethod};
 use slamtool::seakeeping::slamming::DEFAULT_SLAM_PROBABILITY_LIMIT;
 use slamtool::{Error, Result};
 
+use super::global::{self, JsonArg};
+use super::station;
+
+/// Examples at the end of `slamtool motions --help`.
+pub const EXAMPLES: &str = "\
+Examples:
+  slamtool motions hulls/ochi-vform.toml --sea sea_states/ochi-1958.toml -o reports/ochi-motions
+  slamtool motions hulls/ochi-vform.toml --sea sea_states/ochi-1958.toml --loading max-draft
+  slamtool motions hulls/wigley-iii.toml --sea sea.toml --fn 0.2,0.3 --station 0.05,0.1 --json";
+
 #[derive(Debug, Clone, Copy, clap::ValueEnum)]
 enum Method {
-    /// Frank (1967) close-fit pulsating sources (default).
+    /// Frank (1967) close-fit pulsating sources.
     CloseFit,
     /// Lewis conformal mapping with Ursell-Tasai multipoles.
     Lewis,
@@ -44,16 +54,31 @@ pub struct MotionsArgs {
         default_value = "0.5,0.75,1.0,1.25,1.5,1.75,2.0,2.5,3.0"
     )]
     lambda_over_l: Vec<f64>,
-    /// Stations as fractions of Lpp aft of the FP, comma-separated (default: the hull's sensor stations, or
-    /// 0.05,0.1,0.15,0.2).
-    #[arg(long, value_delimiter = ',')]
-    at: Vec<f64>,
+    /// Bow stations as fractions of Lpp aft of the FP, comma-separated [default: the hull's sensor
+    /// stations, or 0.05,0.1,0.15,0.2].
+    #[arg(
+        long,
+        value_delimiter = ',',
+        value_name = "F",
+        alias = "at",
+        conflicts_with = "x_m",
+        allow_negative_numbers = true
+    )]
+    station: Vec<f64>,
+    /// Bow stations as x in m from midship (positive forward), comma-separated.
+    #[arg(
+        long,
+        value_delimiter = ',',
+        value_name = "X",
+        allow_negative_numbers = true
+    )]
+    x_m: Vec<f64>,
     /// Sectional hydrodynamics.
     #[arg(long, value_enum, default_value = "close-fit")]
     method: Method,
-    /// Number of strip-theory stations.
-    #[arg(long, default_value_t = 31)]
-    stations: usize,
+    /// Number of strips (sections) along the hull for strip theory.
+    #[arg(long, default_value_t = 31, alias = "stations", value_name = "N")]
+    strips: usize,
     /// Dynamic swell-up factor on relative motion and velocity (1 = none).
     #[arg(long, default_value_t = 1.0)]
     swell_up: f64,
@@ -67,13 +92,12 @@ pub struct MotionsArgs {
     /// every encounter frequency directly). At 0.1 the RAOs differ from direct solves by about 1e-4.
     #[arg(long, default_value_t = 0.1)]
     frequency_spacing: f64,
-    /// Print JSON instead of tables.
-    #[arg(long)]
-    json: bool,
+    #[command(flatten)]
+    json: JsonArg,
     /// Write CSV plot data (RAOs, relative motion, entry profiles, response spectra, slam statistics,
-    /// operability) here.
-    #[arg(short, long)]
-    output: Option<PathBuf>,
+    /// operability) into this folder [default: no files, tables only].
+    #[arg(short, long, value_name = "DIR", alias = "output")]
+    out: Option<PathBuf>,
 }
 
 fn bad(what: &str, requirement: &str, v: f64) -> Error {
@@ -102,7 +126,7 @@ pub fn run(a: MotionsArgs) -> Result<()> {
             a.frequency_spacing,
         ));
     }
-    let model = ShipModel::from_hull(&hull, loading, a.stations)?;
+    let model = ShipModel::from_hull(&hull, loading, a.strips)?;
     let speeds = if a.froude.is_empty() {
         sea.speeds.resolve(hull.lpp)
     } else {
@@ -111,7 +135,12 @@ pub fn run(a: MotionsArgs) -> Result<()> {
             .map(|f| f * (model.g * hull.lpp).sqrt())
             .collect()
     };
-    let mut at = a.at.clone();
+    let mut warnings: Vec<String> = Vec::new();
+    let mut at: Vec<f64> = if a.x_m.is_empty() {
+        a.station.clone()
+    } else {
+        a.x_m.iter().map(|&x| hull.aft_of_fp(x)).collect()
+    };
     if at.is_empty() {
         at = hull.sensors.iter().map(|s| hull.aft_of_fp(s.x)).collect();
         at.sort_by(f64::total_cmp);
@@ -122,12 +151,14 @@ pub fn run(a: MotionsArgs) -> Result<()> {
     }
     let mut stations = Vec::new();
     for &f in &at {
-        if !(f.is_finite() && (0.0..=1.0).contains(&f)) {
-            return Err(Error::Invalid(format!(
-                "--at values are fractions of Lpp aft of the FP in [0, 1], got {f}"
-            )));
-        }
         let x = hull.station_x(f);
+        let given = if a.x_m.is_empty() {
+            format!("--station {f}")
+        } else {
+            format!("--x-m {x}")
+        };
+        let st = station::check(&hull, x, given)?;
+        warnings.extend(st.warning);
         let sec = hull.section_at(x)?;
         let z_w = loading.draft_at(x, hull.lpp);
         let wet: Vec<[f64; 2]> = sec.wetted(z_w).iter().map(|p| [p[0], p[1] - z_w]).collect();
@@ -142,8 +173,8 @@ pub fn run(a: MotionsArgs) -> Result<()> {
         }
         if pts.len() < 2 {
             return Err(Error::Invalid(format!(
-                "station {f} Lpp aft of FP is dry at loading '{}'",
-                loading.name
+                "{}: the section there is dry at loading '{}'",
+                st.given, loading.name
             )));
         }
         let h = HalfSection::new(pts)?;
@@ -168,32 +199,59 @@ pub fn run(a: MotionsArgs) -> Result<()> {
         water_depth: sea.water_depth_m,
     };
     let report = analysis::run(&model, &req)?;
-    if a.json {
-        for w in &report.warnings {
-            eprintln!("warning: {w}");
-        }
-    }
+    warnings.extend(sanity::negative_gm(&Hydrostatics::compute(&hull, loading)));
+    warnings.extend(
+        sea.irregular
+            .iter()
+            .filter_map(|ir| sanity::spectrum_samples(ir, req.spectrum_samples)),
+    );
+    warnings.extend(sanity::operability_limits(&report));
+    warnings.extend(report.warnings.iter().cloned());
     let settings = serde_json::json!({
-        "loading": loading.name, "method": format!("{:?}", method), "strip_stations": a.stations,
+        "loading": loading.name, "method": method.name(), "strips": a.strips,
         "swell_up": a.swell_up, "slam_limit": a.slam_limit, "lambda_over_l": a.lambda_over_l,
-        "speeds_m_s": req.speeds, "stations_aft_of_fp": at,
+        "speeds_m_per_s": req.speeds, "stations": at, "spectrum_samples": req.spectrum_samples,
         "frequency_spacing": a.frequency_spacing,
     });
-    let prov = Provenance::new(&[a.hull.as_path(), a.sea.as_path()], settings)?;
-    if let Some(dir) = &a.output {
-        report::write_csv_tables(dir, &report::motions_csv::tables(&report), &prov)?;
-    }
-    if a.json {
-        let out = serde_json::json!({ "provenance": prov, "hull": hull.name, "loading": loading.name, "motions": report });
-        println!(
-            "{}",
-            serde_json::to_string_pretty(&out).map_err(|e| Error::Invalid(e.to_string()))?
-        );
+    let mut inputs = hull.input_files();
+    inputs.push(a.sea.as_path());
+    let prov = Provenance::new(&inputs, settings)?;
+    let written = match &a.out {
+        Some(dir) => {
+            report::write_csv_tables(dir, &report::motions_csv::tables(&report, &warnings), &prov)?
+        }
+        None => Vec::new(),
+    };
+    if a.json.json {
+        for w in &warnings {
+            global::warn_stderr(w);
+        }
+        let outputs = a.out.as_ref().map(|d| {
+            serde_json::json!({
+                "folder": d.display().to_string(),
+                "files": written.iter().map(|p| p.display().to_string()).collect::<Vec<_>>(),
+            })
+        });
+        let out = serde_json::json!({
+            "tool": TOOL,
+            "provenance": prov,
+            "warnings": warnings,
+            "outputs": outputs,
+            "hull": hull.name,
+            "loading": loading.name,
+            "motions": report,
+            "regular_slam_flags": sanity::regular_slam_flags(&report),
+        });
+        global::print_json(out);
     } else {
         print!(
             "{}",
-            report::motions_text::tables(&hull.name, &loading.name, &report)
+            report::motions_text::tables(&hull.name, &loading.name, &report, &warnings)
         );
+        match &a.out {
+            Some(dir) => println!("\n{}", global::files_written_line(dir)),
+            None => println!("\nno files written (give -o DIR for the CSV plot data)"),
+        }
     }
     Ok(())
 }

@@ -45,20 +45,31 @@ pub struct Hydrostatics {
     pub beam_wl_m: f64,
     pub mean_draft_m: f64,
     pub trim_by_stern_m: f64,
+    #[serde(rename = "water_density_kg_per_m3")]
     pub rho_kg_m3: f64,
     /// Immersed volume ∇, m³.
+    #[serde(rename = "volume_m3")]
     pub volume: f64,
     /// Buoyancy ρ∇, kg.
     pub displacement_kg: f64,
+    #[serde(rename = "lcb_m")]
     pub lcb: f64,
+    #[serde(rename = "kb_m")]
     pub kb: f64,
+    #[serde(rename = "waterplane_area_m2")]
     pub awp: f64,
+    #[serde(rename = "lcf_m")]
     pub lcf: f64,
+    #[serde(rename = "bm_t_m")]
     pub bm_t: f64,
+    #[serde(rename = "bm_l_m")]
     pub bm_l: f64,
+    #[serde(rename = "gm_t_m")]
     pub gm_t: f64,
+    #[serde(rename = "gm_l_m")]
     pub gm_l: f64,
     /// Midship sectional area, m².
+    #[serde(rename = "midship_area_m2")]
     pub am: f64,
     pub cb: f64,
     pub cp: f64,

@@ -112,6 +112,10 @@ pub(crate) fn hull_from_source(src: &SourceText) -> Result<Hull> {
         loadings,
         sensors: Vec::new(),
         source: src.path.clone(),
+        offsets_file: raw.offsets_csv.as_ref().map(|c| {
+            let base = src.path.parent().unwrap_or(std::path::Path::new("."));
+            base.join(c.get_ref().file.get_ref())
+        }),
     };
     for l in &raw.loading.get_ref()[..] {
         check_offsets_reach_waterline(src, &hull, l)?;

@@ -101,6 +101,8 @@ pub struct Hull {
     pub sensors: Vec<Sensor>,
     /// The file the hull was read from.
     pub source: PathBuf,
+    /// The offsets CSV file the stations came from, when the hull file names one (`[offsets_csv]`).
+    pub offsets_file: Option<PathBuf>,
     interpolator: SectionInterpolator,
 }
 
@@ -109,6 +111,13 @@ impl Hull {
     pub fn from_file(path: &Path) -> Result<Self> {
         let src = SourceText::read(path)?;
         Self::from_source(&src)
+    }
+
+    /// Every file the hull was read from: the hull file and, if any, its offsets CSV (for provenance).
+    pub fn input_files(&self) -> Vec<&Path> {
+        std::iter::once(self.source.as_path())
+            .chain(self.offsets_file.as_deref())
+            .collect()
     }
 
     /// Validate a hull from text (the path is used for error messages and relative CSV files).

@@ -12,6 +12,7 @@ pub struct Peak {
     /// Largest value.
     pub value: f64,
     /// Time of the largest value (s).
+    #[serde(rename = "time_s")]
     pub time: f64,
     /// Integral over the whole record (trapezoidal rule), e.g. N s/m for a force per metre.
     pub impulse: f64,

@@ -1,24 +1,33 @@
 //! CSV plot data of a motions analysis ([`crate::seakeeping::analysis::Report`]): one function per table.
 //! Rows run over the speeds in the order analysed, then over the waves, seas and stations in the order
-//! given.
+//! given. Every column name carries its unit; `station` is the fraction of Lpp aft of the FP.
 
+use super::sanity::SlamFlag;
 use super::{CsvTable, csv_number as f};
 use crate::seakeeping::analysis::Report;
 
-/// All motion tables, in the order `slamtool motions -o DIR` writes them.
-pub fn tables(r: &Report) -> Vec<CsvTable> {
-    vec![
+/// All motion tables, in the order `slamtool motions -o DIR` writes them. `warnings` (the report's and
+/// the caller's sanity warnings) go into every file as notes.
+pub fn tables(r: &Report, warnings: &[String]) -> Vec<CsvTable> {
+    let mut t = vec![
         raos(r),
         relative_motion(r),
         entry_profiles(r),
         slam_statistics(r),
         response_spectra(r),
         operability(r),
-    ]
+    ];
+    for table in &mut t {
+        table
+            .notes
+            .extend(warnings.iter().map(|w| format!("warning: {w}")));
+    }
+    t
 }
 
 /// `raos.csv`: heave and pitch RAOs per speed and wavelength ratio, in the nondimensional forms of the tank
-/// tables (heave/zeta_a; pitch L/(2 pi zeta_a) and pitch/(k zeta_a)).
+/// tables (heave over wave amplitude; pitch times Lpp/(2 pi wave amplitude) and over the wave slope k
+/// times the wave amplitude).
 pub fn raos(r: &Report) -> CsvTable {
     let mut rows = Vec::new();
     for s in &r.speeds {
@@ -40,23 +49,24 @@ pub fn raos(r: &Report) -> CsvTable {
     CsvTable {
         file_name: "raos.csv",
         header: &[
-            "speed_m_s",
-            "froude",
-            "lambda_over_l",
-            "omega0",
-            "omega_e",
-            "heave_over_za",
+            "speed_m_per_s",
+            "froude_number",
+            "wavelength_over_lpp",
+            "wave_frequency_rad_per_s",
+            "encounter_frequency_rad_per_s",
+            "heave_over_wave_amplitude",
             "heave_phase_deg",
-            "pitch_l_over_2pi_za",
-            "pitch_over_k_za",
+            "pitch_lpp_over_2pi_wave_amplitude",
+            "pitch_over_wave_slope",
             "pitch_phase_deg",
         ],
+        notes: Vec::new(),
         rows,
     }
 }
 
 /// `relative_motion.csv`: relative motion and velocity amplitudes per station in each regular wave, with
-/// the keel-entry instant and velocity where the keel enters (empty otherwise).
+/// the keel-entry instant and velocity where the keel enters (empty otherwise) and Ochi's slam flag.
 pub fn relative_motion(r: &Report) -> CsvTable {
     let mut rows = Vec::new();
     for s in &r.speeds {
@@ -78,23 +88,36 @@ pub fn relative_motion(r: &Report) -> CsvTable {
                     f(t.relative_velocity_m_s),
                     te,
                     ve,
+                    SlamFlag::of(t, r.slam_threshold_velocity_m_s)
+                        .text()
+                        .to_string(),
                 ]);
             }
         }
     }
+    let mut notes = vec![format!(
+        "empty entry_time_s and entry_velocity_m_per_s: the keel does not emerge from the water at that \
+         station; slam_flag by Ochi's criterion, threshold velocity {:.3} m/s",
+        r.slam_threshold_velocity_m_s
+    )];
+    if rows.is_empty() {
+        notes.push("no regular wave in the sea-state file".into());
+    }
     CsvTable {
         file_name: "relative_motion.csv",
         header: &[
-            "speed_m_s",
+            "speed_m_per_s",
             "wave",
-            "aft_of_fp",
+            "station",
             "x_m",
             "draft_m",
-            "relative_motion_m",
-            "relative_velocity_m_s",
-            "t_entry_s",
-            "entry_velocity_m_s",
+            "relative_motion_amplitude_m",
+            "relative_velocity_amplitude_m_per_s",
+            "entry_time_s",
+            "entry_velocity_m_per_s",
+            "slam_flag",
         ],
+        notes,
         rows,
     }
 }
@@ -120,16 +143,25 @@ pub fn entry_profiles(r: &Report) -> CsvTable {
             }
         }
     }
+    let notes = if rows.is_empty() {
+        vec![
+            "no keel entry: no regular wave, or the keel stays in the water at every station"
+                .into(),
+        ]
+    } else {
+        Vec::new()
+    };
     CsvTable {
         file_name: "entry_profiles.csv",
         header: &[
-            "speed_m_s",
+            "speed_m_per_s",
             "wave",
-            "aft_of_fp",
-            "t_since_entry_s",
-            "velocity_m_s",
+            "station",
+            "time_since_entry_s",
+            "velocity_m_per_s",
             "penetration_m",
         ],
+        notes,
         rows,
     }
 }
@@ -144,6 +176,7 @@ pub fn slam_statistics(r: &Report) -> CsvTable {
                 rows.push(vec![
                     ir.sea.clone(),
                     f(s.speed_m_s),
+                    f(r.lpp_m.recip() * (0.5 * r.lpp_m - t.x)),
                     f(t.x),
                     f(t.draft),
                     f(t.m0),
@@ -156,20 +189,29 @@ pub fn slam_statistics(r: &Report) -> CsvTable {
             }
         }
     }
+    let mut notes = vec![
+        "empty extreme_entry_velocity_m_per_s: fewer than one slam expected over the exposure time"
+            .into(),
+    ];
+    if rows.is_empty() {
+        notes.push("no irregular sea in the sea-state file".into());
+    }
     CsvTable {
         file_name: "slam_statistics.csv",
         header: &[
             "sea",
-            "speed_m_s",
+            "speed_m_per_s",
+            "station",
             "x_m",
             "draft_m",
-            "m0_m2",
-            "m2_m2_s2",
-            "threshold_m_s",
-            "probability",
+            "relative_motion_variance_m2",
+            "relative_velocity_variance_m2_per_s2",
+            "threshold_velocity_m_per_s",
+            "slam_probability",
             "slams_per_hour",
-            "extreme_velocity_m_s",
+            "extreme_entry_velocity_m_per_s",
         ],
+        notes,
         rows,
     }
 }
@@ -194,17 +236,23 @@ pub fn response_spectra(r: &Report) -> CsvTable {
             }
         }
     }
+    let notes = if rows.is_empty() {
+        vec!["no irregular sea in the sea-state file".into()]
+    } else {
+        Vec::new()
+    };
     CsvTable {
         file_name: "response_spectra.csv",
         header: &[
             "sea",
-            "speed_m_s",
+            "speed_m_per_s",
             "x_m",
-            "omega0",
-            "omega_e",
-            "relative_motion_m2_s",
-            "relative_velocity_m2_per_s",
+            "wave_frequency_rad_per_s",
+            "encounter_frequency_rad_per_s",
+            "relative_motion_density_m2_s",
+            "relative_velocity_density_m2_per_s",
         ],
+        notes,
         rows,
     }
 }
@@ -229,15 +277,22 @@ pub fn operability(r: &Report) -> CsvTable {
             ]);
         }
     }
+    let mut notes = vec![
+        "empty limit_speed_m_per_s: even the lowest speed tested exceeds the slam probability limit".into(),
+    ];
+    if rows.is_empty() {
+        notes.push("no irregular sea in the sea-state file".into());
+    }
     CsvTable {
         file_name: "operability.csv",
         header: &[
             "sea",
-            "speed_m_s",
-            "max_probability",
-            "limit",
-            "limit_speed_m_s",
+            "speed_m_per_s",
+            "max_slam_probability",
+            "slam_probability_limit",
+            "limit_speed_m_per_s",
         ],
+        notes,
         rows,
     }
 }

@@ -46,6 +46,7 @@ pub struct RegularWave {
     /// Wave height (crest to trough), m.
     pub height_m: f64,
     /// Wave frequency ω, rad/s.
+    #[serde(rename = "wave_frequency_rad_per_s")]
     pub omega: f64,
     /// Period, s.
     pub period_s: f64,

@@ -22,16 +22,20 @@ const ALPHA_PM: f64 = 0.0081;
 pub enum Spectrum {
     PiersonMoskowitz {
         hs_m: f64,
+        #[serde(rename = "peak_frequency_rad_per_s")]
         omega_p: f64,
     },
     Bretschneider {
         hs_m: f64,
+        #[serde(rename = "peak_frequency_rad_per_s")]
         omega_p: f64,
     },
     Jonswap {
         hs_m: f64,
+        #[serde(rename = "peak_frequency_rad_per_s")]
         omega_p: f64,
         gamma: f64,
+        #[serde(skip)]
         norm: f64,
     },
 }
@@ -43,8 +47,11 @@ pub struct SpectrumSummary {
     pub tp_s: f64,
     pub tz_s: f64,
     pub t1_s: f64,
+    #[serde(rename = "m0_m2")]
     pub m0: f64,
+    #[serde(rename = "m1_m2_per_s")]
     pub m1: f64,
+    #[serde(rename = "m2_m2_per_s2")]
     pub m2: f64,
 }
 

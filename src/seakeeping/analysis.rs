@@ -17,11 +17,15 @@ use crate::sea::{IrregularSea, RegularWave};
 /// A station where relative motion and slamming are evaluated.
 #[derive(Debug, Clone, Serialize)]
 pub struct Station {
+    #[serde(rename = "station")]
     pub aft_of_fp: f64,
+    #[serde(rename = "x_m")]
     pub x: f64,
     /// Keel depth below the local calm waterline (m).
+    #[serde(rename = "draft_m")]
     pub draft: f64,
     /// Keel-to-deck height of the section (m): the entry profile stops at this depth.
+    #[serde(rename = "height_m")]
     pub height: f64,
 }
 
@@ -66,21 +70,30 @@ pub struct Request {
 pub struct RegularResult {
     pub wave: String,
     pub height_m: f64,
+    #[serde(rename = "wave_frequency_rad_per_s")]
     pub omega0: f64,
+    #[serde(rename = "encounter_frequency_rad_per_s")]
     pub omega_e: f64,
+    #[serde(rename = "heave_amplitude_m")]
     pub heave_m: f64,
+    #[serde(rename = "pitch_amplitude_deg")]
     pub pitch_deg: f64,
     pub stations: Vec<RegularStation>,
 }
 
 #[derive(Debug, Clone, Serialize)]
 pub struct RegularStation {
+    #[serde(rename = "station")]
     pub aft_of_fp: f64,
+    #[serde(rename = "x_m")]
     pub x: f64,
+    #[serde(rename = "draft_m")]
     pub draft: f64,
     /// Relative motion amplitude (m) in this wave.
+    #[serde(rename = "relative_motion_amplitude_m")]
     pub relative_motion_m: f64,
     /// Relative velocity amplitude (m/s) in this wave.
+    #[serde(rename = "relative_velocity_amplitude_m_per_s")]
     pub relative_velocity_m_s: f64,
     pub keel_entry: Option<KeelEntry>,
 }
@@ -94,6 +107,7 @@ pub struct IrregularResult {
     pub duration_h: f64,
     pub stations: Vec<SlamStatistics>,
     /// Most probable largest entry velocity in the expected number of slams over the duration (m/s).
+    #[serde(rename = "extreme_entry_velocity_m_per_s")]
     pub extreme_velocity_m_s: Vec<Option<f64>>,
     /// Relative motion and velocity spectra at the stations (plot data).
     pub response_spectra: Vec<ResponseSpectrum>,
@@ -101,6 +115,7 @@ pub struct IrregularResult {
 
 #[derive(Debug, Clone, Serialize)]
 pub struct SpeedResult {
+    #[serde(rename = "speed_m_per_s")]
     pub speed_m_s: f64,
     pub froude_number: f64,
     pub raos: Vec<RaoRow>,
@@ -126,6 +141,7 @@ pub struct Report {
     /// Natural periods of the coupled heave-pitch modes at zero speed (what a free model shows).
     pub heave_mode_period_s: f64,
     pub pitch_mode_period_s: f64,
+    #[serde(rename = "slam_threshold_velocity_m_per_s")]
     pub slam_threshold_velocity_m_s: f64,
     pub limitation: &'static str,
     /// Conditions outside the range of validity of the method.

@@ -10,17 +10,23 @@ use crate::error::Result;
 /// One row of an RAO table (per unit wave amplitude).
 #[derive(Debug, Clone, Copy, serde::Serialize)]
 pub struct RaoRow {
+    #[serde(rename = "wave_frequency_rad_per_s")]
     pub omega0: f64,
+    #[serde(rename = "encounter_frequency_rad_per_s")]
     pub omega_e: f64,
+    #[serde(rename = "wavelength_m")]
     pub wavelength: f64,
     pub lambda_over_l: f64,
     /// |eta3| / zeta_a.
+    #[serde(rename = "heave_over_wave_amplitude")]
     pub heave: f64,
     /// Heave phase lead relative to the wave crest at midship (deg).
     pub heave_phase_deg: f64,
     /// |eta5| / (k zeta_a).
+    #[serde(rename = "pitch_over_wave_slope")]
     pub pitch_over_k: f64,
     /// |eta5| L / (2 pi zeta_a), the nondimensional pitch of Journee (1992).
+    #[serde(rename = "pitch_lpp_over_2pi_wave_amplitude")]
     pub pitch_nd: f64,
     pub pitch_phase_deg: f64,
 }

@@ -53,21 +53,28 @@ pub fn at_station(r: &Response, x: f64, swell_up: f64) -> Result<RelativeMotion>
 #[derive(Debug, Clone, Copy, serde::Serialize)]
 pub struct EntrySample {
     /// Time since keel entry (s).
+    #[serde(rename = "time_since_entry_s")]
     pub t: f64,
     /// Downward entry velocity V = -Ds/Dt (m/s).
+    #[serde(rename = "velocity_m_per_s")]
     pub velocity: f64,
     /// Keel depth below the local water surface, T - s(t) (m).
+    #[serde(rename = "penetration_m")]
     pub penetration: f64,
 }
 
 /// Keel entry in a regular wave and the velocity profile after it.
 #[derive(Debug, Clone, serde::Serialize)]
 pub struct KeelEntry {
+    #[serde(rename = "x_m")]
     pub x: f64,
     /// Instant of keel entry within the encounter period, t in [0, T_e) (s; t = 0: crest at midship).
+    #[serde(rename = "entry_time_s")]
     pub t_entry: f64,
+    #[serde(rename = "encounter_period_s")]
     pub encounter_period: f64,
     /// Velocity at the instant of entry (m/s, downward positive).
+    #[serde(rename = "entry_velocity_m_per_s")]
     pub entry_velocity: f64,
     pub samples: Vec<EntrySample>,
 }

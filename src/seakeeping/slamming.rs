@@ -70,14 +70,21 @@ impl SampledSpectrum {
 /// Slam statistics at one station and speed.
 #[derive(Debug, Clone, Copy, serde::Serialize)]
 pub struct SlamStatistics {
+    #[serde(rename = "x_m")]
     pub x: f64,
+    #[serde(rename = "speed_m_per_s")]
     pub speed: f64,
+    #[serde(rename = "draft_m")]
     pub draft: f64,
     /// Relative-motion variance m0 (m^2).
+    #[serde(rename = "relative_motion_variance_m2")]
     pub m0: f64,
     /// Relative-velocity variance m2 (m^2/s^2).
+    #[serde(rename = "relative_velocity_variance_m2_per_s2")]
     pub m2: f64,
+    #[serde(rename = "threshold_velocity_m_per_s")]
     pub threshold_velocity: f64,
+    #[serde(rename = "slam_probability")]
     pub probability: f64,
     pub slams_per_hour: f64,
 }
@@ -116,13 +123,19 @@ pub fn ochi(x: f64, speed: f64, draft: f64, m0: f64, m2: f64, v_th: f64) -> Slam
 /// sampled wave spectrum: S_s(w_e) = |s(w0)|^2 S(w0) / (dw_e/dw0), dw_e/dw0 = 1 + 2 w0 U / g (head seas).
 #[derive(Debug, Clone, serde::Serialize)]
 pub struct ResponseSpectrum {
+    #[serde(rename = "x_m")]
     pub x: f64,
+    #[serde(rename = "speed_m_per_s")]
     pub speed: f64,
+    #[serde(rename = "wave_frequency_rad_per_s")]
     pub omega0: Vec<f64>,
+    #[serde(rename = "encounter_frequency_rad_per_s")]
     pub omega_e: Vec<f64>,
     /// Relative motion spectral density per unit encounter frequency (m^2 s).
+    #[serde(rename = "relative_motion_m2_s")]
     pub motion: Vec<f64>,
     /// Relative velocity spectral density per unit encounter frequency (m^2/s).
+    #[serde(rename = "relative_velocity_m2_per_s")]
     pub velocity: Vec<f64>,
 }
 
@@ -212,11 +225,15 @@ pub fn statistics_from_spectra(
 /// Operability: slam probability (highest over the stations) per speed and the speed limit.
 #[derive(Debug, Clone, serde::Serialize)]
 pub struct Operability {
+    #[serde(rename = "slam_probability_limit")]
     pub limit: f64,
+    #[serde(rename = "speeds_m_per_s")]
     pub speeds: Vec<f64>,
+    #[serde(rename = "max_slam_probability")]
     pub max_probability: Vec<f64>,
     /// Highest speed with the slam probability below the limit (linear interpolation between the last
     /// acceptable and the first unacceptable speed); None when even the lowest speed exceeds the limit.
+    #[serde(rename = "limit_speed_m_per_s")]
     pub limit_speed: Option<f64>,
 }
 

@@ -45,7 +45,8 @@ impl Section {
         for (i, p) in points.iter().enumerate() {
             if !p[0].is_finite() || !p[1].is_finite() {
                 return Err(Error::Invalid(format!(
-                    "section point {i} is not finite: {p:?}"
+                    "section point {i} is not finite: ({}, {})",
+                    p[0], p[1]
                 )));
             }
             if p[0] < 0.0 {

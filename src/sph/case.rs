@@ -35,11 +35,18 @@ use crate::sph::sensors::SensorSpec;
 #[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
 pub enum MotionSpec {
     /// Constant entry speed.
-    Constant { speed_m_s: f64 },
+    Constant {
+        #[serde(rename = "speed_m_per_s", alias = "speed_m_s")]
+        speed_m_s: f64,
+    },
     /// Downward speed from a table of [t_s, v_m_s] rows.
     Prescribed { table: Vec<[f64; 2]> },
     /// Free fall in heave with the given mass per metre of section, from the given entry speed.
-    FreeHeave { mass_per_m_kg: f64, speed_m_s: f64 },
+    FreeHeave {
+        mass_per_m_kg: f64,
+        #[serde(rename = "speed_m_per_s", alias = "speed_m_s")]
+        speed_m_s: f64,
+    },
 }
 
 impl MotionSpec {
@@ -75,15 +82,16 @@ pub enum ForceMethod {
 
 /// How a sensor's pressure is obtained.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize, clap::ValueEnum)]
-#[serde(rename_all = "snake_case")]
+#[serde(rename_all = "kebab-case")]
 pub enum SensorMethod {
     /// Mean over the sensor's width of the wall pressure extrapolated from the fluid (Adami et al. 2012),
     /// zero where the fluid support is below the dry threshold.
     #[default]
     Interpolated,
     /// Normal force of the fluid-body pair forces on the body dummies whose contour projection lies
-    /// within the sensor's span, divided by the span ([`crate::sph::sensors`]): a transducer that
-    /// measures the force on its face, consistent with the pair-force section force.
+    /// within the sensor's span, divided by the span: a transducer that measures the force on its
+    /// face, consistent with the pair-force section force.
+    #[serde(alias = "force_panel")]
     ForcePanel,
 }
 
@@ -91,8 +99,11 @@ pub enum SensorMethod {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
 #[serde(rename_all = "lowercase")]
 pub enum Level {
+    /// 40 particles across the largest half-breadth.
     Coarse,
+    /// 80 particles across the largest half-breadth.
     Medium,
+    /// 160 particles across the largest half-breadth.
     Fine,
 }
 
@@ -112,12 +123,17 @@ impl Level {
 pub struct Setup {
     pub name: String,
     /// Starboard half of the section, keel first (body frame); `None` for a tank without a body.
+    #[serde(rename = "section_points_y_z_m")]
     pub section_points: Option<Vec<[f64; 2]>>,
     pub motion: Option<MotionSpec>,
+    #[serde(rename = "water_density_kg_per_m3")]
     pub rho0: f64,
+    #[serde(rename = "gravity_m_per_s2")]
     pub g: f64,
+    #[serde(rename = "dp_m")]
     pub dp: f64,
     pub h_over_dp: f64,
+    #[serde(rename = "c0_m_per_s")]
     pub c0: f64,
     pub eos: EosKind,
     /// delta-SPH coefficient (Antuono et al. 2010).
@@ -139,8 +155,11 @@ pub struct Setup {
     /// How the sensor pressures are computed.
     #[serde(default)]
     pub sensor_method: SensorMethod,
+    #[serde(rename = "tank_half_width_m")]
     pub tank_half_width: f64,
+    #[serde(rename = "tank_depth_m")]
     pub tank_depth: f64,
+    #[serde(rename = "tank_wall_height_m")]
     pub tank_wall_height: f64,
     /// Thickness of the absorbing layer along the side walls and the bottom (m; 0 for none), inside
     /// the tank dimensions above ([`crate::sph::damping_zone`]).
@@ -148,9 +167,11 @@ pub struct Setup {
     pub damping_zone: f64,
     /// Half domain with a symmetry plane at y = 0.
     pub mirror: bool,
+    #[serde(rename = "t_end_s")]
     pub t_end: f64,
     pub sensors: Vec<SensorSpec>,
     /// Time between particle snapshots (VTK/PNG); `None` for none.
+    #[serde(rename = "snapshot_interval_s")]
     pub snapshot_interval: Option<f64>,
     /// Cut-off of the zero-phase low-pass filter applied to the reported peaks (Hz); `None` for raw only.
     pub filter_cutoff_hz: Option<f64>,

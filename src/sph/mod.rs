@@ -33,7 +33,6 @@ pub mod study;
 pub mod tank;
 pub mod vtu;
 
-use std::io::Write as _;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -55,12 +54,14 @@ pub use study::{ConvergenceReport, StudyPlan, run_with_convergence};
 pub struct RunOptions {
     /// Output folder; `None` writes nothing.
     pub out_dir: Option<PathBuf>,
-    /// Print a progress line on stderr.
-    pub progress: bool,
+    /// Where progress goes (nothing by default); the CLI draws it as a progress bar.
+    pub progress: crate::progress::ProgressHandle,
     /// Write VTK snapshots (needs `snapshot_interval` in the setup).
     pub vtk: bool,
     /// Write PNG frames (needs `snapshot_interval` in the setup).
     pub png: bool,
+    /// Provenance for the head of the CSV files (tool, commit, inputs, settings).
+    pub provenance: Option<crate::provenance::Provenance>,
 }
 
 /// Peak of one recorded quantity.
@@ -86,6 +87,7 @@ pub struct RunSummary {
     pub tool_version: String,
     pub dp_m: f64,
     pub h_m: f64,
+    #[serde(rename = "c0_m_per_s")]
     pub c0_m_s: f64,
     pub fluid_particles: usize,
     pub total_particles: usize,
@@ -101,6 +103,7 @@ pub struct RunSummary {
     /// sampling), with time and place.
     pub peak_contour_pressure_pa: f64,
     pub peak_contour_pressure_time_s: f64,
+    #[serde(rename = "peak_contour_pressure_girth_m")]
     pub peak_contour_pressure_s_m: f64,
     /// Largest contour pressure during the contact transient (the acoustic contact spike, of order
     /// rho c0 V; not a slamming pressure), with its time.
@@ -122,6 +125,9 @@ pub struct RunSummary {
     pub convergence: Option<ConvergenceReport>,
     pub counters: Counters,
     pub setup: Setup,
+    /// Where the run came from (tool, commit, inputs, settings), when the caller gave it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub provenance: Option<crate::provenance::Provenance>,
 }
 
 /// The outcome of [`run`]: the summary and the full histories.
@@ -141,20 +147,13 @@ pub fn run(setup: Setup, opts: &RunOptions) -> Result<RunResult> {
     let snap = sim.setup.snapshot_interval.filter(|_| opts.vtk || opts.png);
     let mut frames: Vec<(f64, String)> = Vec::new();
     let mut next_snap = 0.0;
-    let mut last_print = Instant::now();
+    let progress_sink = opts.progress.clone();
+    progress_sink.start(&sim.setup.name, t_end * 1e3, "ms");
     let mut progress = |s: &Simulation| {
-        if opts.progress && last_print.elapsed().as_secs_f64() > 0.5 {
-            last_print = Instant::now();
-            eprint!(
-                "\r  t = {:8.3} ms / {:.3} ms  step {:7}  dt {:.2e} s  Fz {:10.1} N/m   ",
-                s.time * 1e3,
-                t_end * 1e3,
-                s.steps,
-                s.dt,
-                s.body.fz
-            );
-            let _ = std::io::stderr().flush();
-        }
+        progress_sink.update(
+            s.time * 1e3,
+            &format!("step {}, section force {:.0} N/m", s.steps, s.body.fz),
+        );
     };
     let mut stopped = None;
     loop {
@@ -178,22 +177,23 @@ pub fn run(setup: Setup, opts: &RunOptions) -> Result<RunResult> {
             break;
         }
     }
-    if opts.progress {
-        eprintln!();
-    }
+    opts.progress.finish();
     // The histories first: whatever fails after the time loop, they are on disk.
     if let Some(dir) = &opts.out_dir {
-        write_text_atomic(&dir.join("history.csv"), &output::history_csv(&sim.history))?;
+        let csv = output::history_csv(&sim.history, opts.provenance.as_ref())?;
+        write_text_atomic(&dir.join("history.csv"), &csv)?;
     }
-    let summary = summarise_run(&sim, wall.elapsed().as_secs_f64(), stopped.clone()).map_err(|e| {
-        let where_ = opts.out_dir.as_ref().map_or(String::new(), |d| {
-            format!(" (the histories are in {})", d.join("history.csv").display())
-        });
-        Error::Numerical(format!(
-            "SPH run '{}' finished its time loop at t = {:.6} s, but its summary failed: {e}{where_}",
-            sim.setup.name, sim.time
-        ))
-    })?;
+    let mut summary =
+        summarise_run(&sim, wall.elapsed().as_secs_f64(), stopped.clone()).map_err(|e| {
+            let where_ = opts.out_dir.as_ref().map_or(String::new(), |d| {
+                format!(" (the histories are in {})", d.join("history.csv").display())
+            });
+            Error::Numerical(format!(
+                "SPH run '{}' finished its time loop at t = {:.6} s, but its summary failed: {e}{where_}",
+                sim.setup.name, sim.time
+            ))
+        })?;
+    summary.provenance = opts.provenance.clone();
     if let Some(dir) = &opts.out_dir {
         let json = serde_json::to_string_pretty(&summary).expect("summary serialises");
         write_text_atomic(&dir.join("summary.json"), &json)?;
@@ -264,7 +264,7 @@ fn summarise_run(sim: &Simulation, wall_s: f64, stopped: Option<String>) -> Resu
     let fc = s.filter_cutoff_hz;
     let t_tr = contact_transient_end(h, s.dp);
     let force = NamedSummary {
-        name: "fz".into(),
+        name: "section force".into(),
         unit: "N/m".into(),
         width_m: None,
         integration_span_m: None,
@@ -335,6 +335,7 @@ fn summarise_run(sim: &Simulation, wall_s: f64, stopped: Option<String>) -> Resu
         convergence: None,
         counters: sim.counters.clone(),
         setup: s.clone(),
+        provenance: None,
     })
 }
 

@@ -459,11 +459,15 @@ impl Simulation {
             .any(|v| !v.is_finite());
             if bad || self.pt.rate[i].iter().any(|v| !v.is_finite()) {
                 return format!(
-                    "non-finite state at t = {:.6} s (step {}): {:?} particle at (y, z) = ({:.4}, {:.4}) m, \
+                    "non-finite state at t = {:.6} s (step {}): {} particle at (y, z) = ({:.4}, {:.4}) m, \
                      velocity ({:.3}, {:.3}) m/s, density {:.3} kg/m3",
                     self.time,
                     self.steps,
-                    self.pt.kind[i],
+                    match self.pt.kind[i] {
+                        crate::sph::particles::Kind::Fluid => "water",
+                        crate::sph::particles::Kind::Wall => "tank-wall",
+                        crate::sph::particles::Kind::Body => "body",
+                    },
                     self.pt.y[i],
                     self.pt.z[i],
                     self.pt.vy[i],

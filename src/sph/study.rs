@@ -8,7 +8,6 @@
 //! did finish. The run at the requested spacing is the one reported; its `summary.json` carries the
 //! statements, and `convergence.csv` lists them one per row.
 
-use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use serde::Serialize;
@@ -207,14 +206,14 @@ pub fn run_with_convergence(setup: Setup, opts: &RunOptions, plan: StudyPlan) ->
             companions.push(c);
             continue;
         }
-        if opts.progress {
-            eprintln!("  convergence companion at dp {:.3} mm", s.dp * 1e3);
-        }
+        opts.progress
+            .note(&format!("convergence companion at dp {:.3} mm", s.dp * 1e3));
         let o = RunOptions {
             out_dir: folder,
-            progress: opts.progress,
+            progress: opts.progress.clone(),
             vtk: false,
             png: false,
+            provenance: opts.provenance.clone(),
         };
         match run(s, &o) {
             Ok(r) => c.summary = Some(r.summary),
@@ -241,7 +240,8 @@ pub fn run_with_convergence(setup: Setup, opts: &RunOptions, plan: StudyPlan) ->
         peaks,
     };
     if let Some(dir) = &opts.out_dir {
-        write_text_atomic(&dir.join("convergence.csv"), &convergence_csv(&report))?;
+        let csv = convergence_csv(&report, opts.provenance.as_ref())?;
+        write_text_atomic(&dir.join("convergence.csv"), &csv)?;
     }
     result.summary.convergence = Some(report);
     if let Some(dir) = &opts.out_dir {
@@ -251,11 +251,28 @@ pub fn run_with_convergence(setup: Setup, opts: &RunOptions, plan: StudyPlan) ->
     Ok(result)
 }
 
-/// One row per peak: the values at each spacing, the estimate and the statement.
-pub fn convergence_csv(r: &ConvergenceReport) -> String {
-    let mut s = String::from(
-        "quantity,unit,dp_m,values,relative_change,observed_order,order_used,extrapolated,gci,verdict,statement\n",
-    );
+/// One row per peak: the values at each spacing (`;`-separated), the estimate and the statement, headed by
+/// the provenance (when given).
+pub fn convergence_csv(
+    r: &ConvergenceReport,
+    prov: Option<&crate::provenance::Provenance>,
+) -> Result<String> {
+    let header: Vec<String> = [
+        "quantity",
+        "unit",
+        "dp_m",
+        "values",
+        "relative_change",
+        "observed_order",
+        "order_used",
+        "extrapolated",
+        "gci",
+        "verdict",
+        "statement",
+    ]
+    .iter()
+    .map(|c| c.to_string())
+    .collect();
     let opt = |v: Option<f64>| v.map_or(String::new(), |x| format!("{x:.6e}"));
     let list = |v: &[f64]| {
         v.iter()
@@ -263,26 +280,28 @@ pub fn convergence_csv(r: &ConvergenceReport) -> String {
             .collect::<Vec<_>>()
             .join(";")
     };
-    for p in &r.peaks {
-        let verdict = serde_json::to_value(p.verdict)
-            .ok()
-            .and_then(|v| v.as_str().map(str::to_string))
-            .unwrap_or_default();
-        let _ = writeln!(
-            s,
-            "\"{}\",{},{},{},{},{},{},{},{},{},\"{}\"",
-            p.name,
-            p.unit,
-            list(&p.dp_m),
-            list(&p.values),
-            opt(p.relative_change),
-            opt(p.observed_order),
-            opt(p.order_used),
-            opt(p.extrapolated),
-            opt(p.gci),
-            verdict,
-            p.statement.replace('"', "'")
-        );
-    }
-    s
+    let rows: Vec<Vec<String>> = r
+        .peaks
+        .iter()
+        .map(|p| {
+            let verdict = serde_json::to_value(p.verdict)
+                .ok()
+                .and_then(|v| v.as_str().map(str::to_string))
+                .unwrap_or_default();
+            vec![
+                p.name.clone(),
+                p.unit.clone(),
+                list(&p.dp_m),
+                list(&p.values),
+                opt(p.relative_change),
+                opt(p.observed_order),
+                opt(p.order_used),
+                opt(p.extrapolated),
+                opt(p.gci),
+                verdict,
+                p.statement.clone(),
+            ]
+        })
+        .collect();
+    crate::sph::output::csv_text(prov, &header, &rows)
 }

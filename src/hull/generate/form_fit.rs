@@ -224,7 +224,8 @@ pub fn fit_form(t: &FormTargets) -> Result<FittedForm> {
         SolverStatus::Solved | SolverStatus::AlmostSolved => {}
         s => {
             return Err(Error::Numerical(format!(
-                "form fit: no fair hull satisfies the form coefficients and section bounds ({s:?})"
+                "form fit: no fair hull satisfies the form coefficients and section bounds (solver status: {})",
+                words(&format!("{s:?}"))
             )));
         }
     }
@@ -234,4 +235,17 @@ pub fn fit_form(t: &FormTargets) -> Result<FittedForm> {
         alpha: z[..n].to_vec(),
         beta: z[n..].to_vec(),
     })
+}
+
+/// A CamelCase identifier as lower-case words ("PrimalInfeasible" -> "primal infeasible"), for messages
+/// that name a status of an external solver.
+fn words(ident: &str) -> String {
+    let mut out = String::new();
+    for (i, c) in ident.chars().enumerate() {
+        if c.is_uppercase() && i > 0 {
+            out.push(' ');
+        }
+        out.extend(c.to_lowercase());
+    }
+    out
 }

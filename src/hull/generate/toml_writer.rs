@@ -33,7 +33,22 @@ pub fn fmt_decimals(v: f64, decimals: usize) -> String {
     s
 }
 
-/// A TOML basic string (quotes and backslashes escaped).
+/// The TOML escape of a character that may not appear literally in a basic string: the control
+/// characters (U+0000 to U+001F and U+007F), with the short forms where TOML has them.
+fn escape_control(c: char, out: &mut String) {
+    match c {
+        '\u{8}' => out.push_str("\\b"),
+        '\t' => out.push_str("\\t"),
+        '\n' => out.push_str("\\n"),
+        '\u{c}' => out.push_str("\\f"),
+        '\r' => out.push_str("\\r"),
+        c => {
+            let _ = write!(out, "\\u{:04X}", c as u32);
+        }
+    }
+}
+
+/// A TOML basic string: quotes, backslashes and every control character escaped.
 fn quoted(s: &str) -> String {
     let mut out = String::with_capacity(s.len() + 2);
     out.push('"');
@@ -41,8 +56,7 @@ fn quoted(s: &str) -> String {
         match c {
             '"' => out.push_str("\\\""),
             '\\' => out.push_str("\\\\"),
-            '\n' => out.push_str("\\n"),
-            '\t' => out.push_str("\\t"),
+            c if c.is_control() && (c as u32) < 0x80 => escape_control(c, &mut out),
             c => out.push(c),
         }
     }
@@ -50,10 +64,21 @@ fn quoted(s: &str) -> String {
     out
 }
 
-/// A TOML multi-line basic string.
+/// A TOML multi-line basic string: line breaks and tabs kept, quotes, backslashes and the other control
+/// characters (a lone carriage return included) escaped.
 fn multiline(s: &str) -> String {
-    let body = s.replace('\\', "\\\\").replace('"', "\\\"");
-    format!("\"\"\"\n{}\n\"\"\"", body.trim_end())
+    let text = s.replace("\r\n", "\n");
+    let mut body = String::with_capacity(text.len());
+    for c in text.trim_end().chars() {
+        match c {
+            '"' => body.push_str("\\\""),
+            '\\' => body.push_str("\\\\"),
+            '\n' | '\t' => body.push(c),
+            c if c.is_control() && (c as u32) < 0x80 => escape_control(c, &mut body),
+            c => body.push(c),
+        }
+    }
+    format!("\"\"\"\n{body}\n\"\"\"")
 }
 
 fn position_line(p: Position) -> String {
@@ -127,6 +152,19 @@ impl HullSpec {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn strings_with_control_characters_read_back_unchanged() {
+        let nasty = "a\"b\\c\u{0}d\u{7}e\u{8}f\tg\nh\u{c}i\rj\u{1b}k\u{7f}l é";
+        let text = format!("s = {}\nm = {}\n", quoted(nasty), multiline(nasty));
+        let v: toml::Table = toml::from_str(&text).unwrap_or_else(|e| panic!("{e}\n{text}"));
+        assert_eq!(v["s"].as_str(), Some(nasty));
+        // The multi-line form ends with a line break before its closing quotes.
+        assert_eq!(v["m"].as_str(), Some(format!("{nasty}\n").as_str()));
+        let crlf: toml::Table =
+            toml::from_str(&format!("m = {}", multiline("one\r\ntwo"))).unwrap();
+        assert_eq!(crlf["m"].as_str(), Some("one\ntwo\n"));
+    }
 
     #[test]
     fn numbers_are_toml_floats_without_noise() {

@@ -28,7 +28,18 @@ pub enum SectionMethod {
     Lewis,
     /// Frank close-fit pulsating sources (default: accurate for any section shape).
     #[default]
+    #[serde(rename = "close-fit")]
     FrankCloseFit,
+}
+
+impl SectionMethod {
+    /// The method's name in every output and on the command line: `close-fit` or `lewis`.
+    pub fn name(self) -> &'static str {
+        match self {
+            SectionMethod::Lewis => "lewis",
+            SectionMethod::FrankCloseFit => "close-fit",
+        }
+    }
 }
 
 /// A point on the contour where the radiation potential is known.

@@ -1,0 +1,29 @@
+//! Records the git commit the binary is built from, for the provenance of every result. A build from a
+//! tarball (no git, or not a repository) records "unknown" and never fails.
+
+use std::process::Command;
+
+/// Output of `git args...`, trimmed, if git exists and succeeds.
+fn git(args: &[&str]) -> Option<String> {
+    let o = Command::new("git").args(args).output().ok()?;
+    let s = String::from_utf8(o.stdout).ok()?.trim().to_string();
+    (o.status.success() && !s.is_empty()).then_some(s)
+}
+
+fn main() {
+    let commit = git(&["rev-parse", "HEAD"]).unwrap_or_else(|| "unknown".to_string());
+    println!("cargo:rustc-env=SLAMTOOL_GIT_COMMIT={commit}");
+    println!("cargo:rerun-if-changed=build.rs");
+    // Rebuild when HEAD moves: HEAD itself (a branch switch) and the branch it points to (a commit). In a
+    // worktree these live outside the source tree, so ask git where they are.
+    let mut watch = vec![git(&["rev-parse", "--git-path", "HEAD"])];
+    if let Some(branch) = git(&["symbolic-ref", "-q", "HEAD"]) {
+        watch.push(git(&["rev-parse", "--git-path", &branch]));
+        watch.push(git(&["rev-parse", "--git-path", "packed-refs"]));
+    }
+    for p in watch.into_iter().flatten() {
+        if std::path::Path::new(&p).exists() {
+            println!("cargo:rerun-if-changed={p}");
+        }
+    }
+}

@@ -1,0 +1,138 @@
+//! Options every command takes (`-q/--quiet`, `--color`), the `--json` switch of the commands that produce
+//! results, and the few ways a command talks to the user besides its results: notes, warnings, errors and
+//! "files written to ...". New commands flatten [`JsonArg`] and use these functions, so that all commands
+//! behave alike.
+
+use std::io::IsTerminal;
+use std::path::Path;
+use std::sync::OnceLock;
+
+use clap::{Args, ValueEnum};
+
+/// When to colour the output.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, ValueEnum)]
+pub enum ColorWhen {
+    /// Colour when writing to a terminal and NO_COLOR is not set.
+    #[default]
+    Auto,
+    /// Always colour.
+    Always,
+    /// Never colour.
+    Never,
+}
+
+/// Options accepted by every command, before or after the subcommand.
+#[derive(Debug, Clone, Args)]
+pub struct GlobalArgs {
+    /// No progress bars or notes on stderr; results, warnings and errors are still printed.
+    #[arg(short, long, global = true, help_heading = "Global options")]
+    pub quiet: bool,
+    /// Colour the help, warnings and errors.
+    #[arg(
+        long,
+        value_enum,
+        global = true,
+        default_value_t = ColorWhen::Auto,
+        value_name = "WHEN",
+        help_heading = "Global options"
+    )]
+    pub color: ColorWhen,
+}
+
+/// `--json` for the commands that produce results.
+#[derive(Debug, Clone, Args)]
+pub struct JsonArg {
+    /// Print the results as one JSON object on stdout instead of tables (schema in the README).
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Debug, Clone, Copy)]
+struct Ui {
+    quiet: bool,
+    color_stderr: bool,
+    color_stdout: bool,
+}
+
+static UI: OnceLock<Ui> = OnceLock::new();
+
+/// Whether `--color WHEN` colours a stream that is (or is not) a terminal.
+pub fn colours(when: ColorWhen, is_terminal: bool) -> bool {
+    match when {
+        ColorWhen::Always => true,
+        ColorWhen::Never => false,
+        ColorWhen::Auto => is_terminal && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty()),
+    }
+}
+
+/// Record the global options; call once, before any output.
+pub fn init(g: &GlobalArgs) {
+    let _ = UI.set(Ui {
+        quiet: g.quiet,
+        color_stderr: colours(g.color, std::io::stderr().is_terminal()),
+        color_stdout: colours(g.color, std::io::stdout().is_terminal()),
+    });
+}
+
+fn ui() -> Ui {
+    *UI.get().unwrap_or(&Ui {
+        quiet: false,
+        color_stderr: false,
+        color_stdout: false,
+    })
+}
+
+/// Whether `-q` was given.
+pub fn quiet() -> bool {
+    ui().quiet
+}
+
+/// Whether progress bars may be drawn: stderr is a terminal and `-q` was not given.
+pub fn progress_visible() -> bool {
+    !quiet() && std::io::stderr().is_terminal()
+}
+
+fn paint(on: bool, code: &str, text: &str) -> String {
+    if on {
+        format!("\x1b[{code}m{text}\x1b[0m")
+    } else {
+        text.to_string()
+    }
+}
+
+/// A note on stderr (what is being run, with which settings); suppressed by `-q`.
+pub fn note(msg: &str) {
+    if !quiet() {
+        eprintln!("{msg}");
+    }
+}
+
+/// A warning on stderr, for output modes where stdout carries JSON (the JSON holds the warnings too).
+pub fn warn_stderr(msg: &str) {
+    eprintln!("{} {msg}", paint(ui().color_stderr, "1;33", "warning:"));
+}
+
+/// A warning line in a text report on stdout.
+pub fn warning_line(msg: &str) -> String {
+    format!("{} {msg}", paint(ui().color_stdout, "1;33", "warning:"))
+}
+
+/// An error on stderr.
+pub fn error(msg: &str) {
+    eprintln!("{} {msg}", paint(ui().color_stderr, "1;31", "error:"));
+}
+
+/// Print a `--json` result on stdout: pretty-printed, numbers rounded to 10 significant digits (no
+/// `5.499999999999962` for 5.5).
+pub fn print_json(value: serde_json::Value) {
+    let tidy = slamtool::provenance::tidy_numbers(value);
+    println!(
+        "{}",
+        serde_json::to_string_pretty(&tidy).expect("a JSON value serialises")
+    );
+}
+
+/// The line every text report ends with when it wrote files.
+pub fn files_written_line(dir: &Path) -> String {
+    format!("files written to {}", dir.display())
+}
