@@ -107,8 +107,12 @@ pub fn note(msg: &str) {
     }
 }
 
-/// A warning on stderr, for output modes where stdout carries JSON (the JSON holds the warnings too).
+/// A warning on stderr, for output modes where stdout carries JSON (the JSON holds the warnings too);
+/// silent with `-q`.
 pub fn warn_stderr(msg: &str) {
+    if quiet() {
+        return;
+    }
     eprintln!("{} {msg}", paint(ui().color_stderr, "1;33", "warning:"));
 }
 

@@ -11,8 +11,8 @@ use slamtool::provenance::{Provenance, TOOL};
 use slamtool::report::{self, sanity};
 use slamtool::sea::SeaState;
 use slamtool::seakeeping::ShipModel;
-use slamtool::seakeeping::analysis::{self, Request, Station};
-use slamtool::seakeeping::section::{HalfSection, SectionMethod};
+use slamtool::seakeeping::analysis::{self, Request};
+use slamtool::seakeeping::section::SectionMethod;
 use slamtool::seakeeping::slamming::DEFAULT_SLAM_PROBABILITY_LIMIT;
 use slamtool::{Error, Result};
 
@@ -159,26 +159,10 @@ pub fn run(a: MotionsArgs) -> Result<()> {
         };
         let st = station::check(&hull, x, given)?;
         warnings.extend(st.warning);
-        let sec = hull.section_at(x)?;
-        let z_w = loading.draft_at(x, hull.lpp);
-        let wet: Vec<[f64; 2]> = sec.wetted(z_w).iter().map(|p| [p[0], p[1] - z_w]).collect();
-        let mut pts: Vec<[f64; 2]> = Vec::new();
-        for q in wet {
-            if pts
-                .last()
-                .is_none_or(|l: &[f64; 2]| (l[0] - q[0]).hypot(l[1] - q[1]) > 1e-9)
-            {
-                pts.push(q);
-            }
-        }
-        if pts.len() < 2 {
-            return Err(Error::Invalid(format!(
-                "{}: the section there is dry at loading '{}'",
-                st.given, loading.name
-            )));
-        }
-        let h = HalfSection::new(pts)?;
-        stations.push(Station::new(hull.lpp, f, &h, sec.deck_z() - sec.keel_z()));
+        stations.push(
+            slamtool::impact::seakeeping_station(&hull, loading, f)
+                .map_err(|e| Error::Invalid(format!("{}: {e}", st.given)))?,
+        );
     }
     let method = match a.method {
         Method::CloseFit => SectionMethod::FrankCloseFit,

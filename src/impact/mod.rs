@@ -22,9 +22,9 @@ pub fn seakeeping_station(
     loading: &LoadingCondition,
     aft_of_fp: f64,
 ) -> Result<Station> {
-    if !(aft_of_fp.is_finite() && (0.0..=1.0).contains(&aft_of_fp)) {
+    if !aft_of_fp.is_finite() {
         return Err(Error::Invalid(format!(
-            "a station is a fraction of Lpp aft of the FP in [0, 1], got {aft_of_fp}"
+            "a station is a fraction of Lpp aft of the FP, got {aft_of_fp}"
         )));
     }
     let x = hull.station_x(aft_of_fp);
