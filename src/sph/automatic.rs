@@ -17,6 +17,11 @@ pub const CLEAR_DEPTH_B: f64 = 3.0;
 pub const CLEAR_WIDTH_B: f64 = 5.0;
 pub const DAMPING_B: f64 = 1.5;
 
+/// Keel penetration, in particle spacings, that a run lasts at least: well past the contact transient
+/// ([`crate::sph::CONTACT_TRANSIENT_DP`]), for a section whose impact Wagner's condition puts at the
+/// instant of contact (a flat keel under steep sides).
+pub const MIN_PENETRATION_DP: f64 = 10.0;
+
 /// Largest sound speed an automatic choice may make: the real sound speed of water. A run that would
 /// need more is an impact whose acoustic phase is real physics, outside weakly compressible SPH.
 pub const MAX_C0: f64 = 1480.0;
@@ -36,39 +41,42 @@ pub struct Choice {
 /// side without a new slam (a chine, a knuckle into a near-vertical side, the turn of a bilge).
 pub const SIDE_DEADRISE_DEG: f64 = 75.0;
 
-/// How far the wetting must go for the impact to be over: the half-breadth of the first point from the
-/// keel where the contour turns into a side ([`SIDE_DEADRISE_DEG`]), or the widest point when there is
-/// none (a flared bow), and in any case past the upper edge of the highest sensor (a flare panel above a
-/// knuckle). Returns the half-breadth and what it is.
+/// How far the wetting must go for the impact to be over. Above the lowest contour point from which
+/// every segment up to the deck edge is a side ([`SIDE_DEADRISE_DEG`] or steeper) no new slam can
+/// happen: the wetting that reaches that point (a chine, a knuckle into a vertical side, the turn of a
+/// bilge) has run through the impact. A section whose top segment is not that steep (a flared bow) is
+/// wetted to its widest point. In any case the wetting goes past the upper edge of the highest sensor
+/// (a flare panel above a knuckle). Returns the half-breadth and what it is.
 pub fn wetting_target(section: &Section, sensors: &[SensorSpec]) -> (f64, String) {
     let half = section.half_points();
     let b = section.half_breadth();
     let steep = SIDE_DEADRISE_DEG.to_radians();
-    let mut widest = 0.0f64;
-    let mut target = (b, format!("the widest point (half-breadth {b:.4} m)"));
-    for w in half.windows(2) {
-        widest = widest.max(w[0][0]);
-        let (dy, dz) = (w[1][0] - w[0][0], w[1][1] - w[0][1]);
-        if dz > 0.0 && dz.atan2(dy.abs()) >= steep && widest > 0.0 {
-            target = (
-                widest,
-                format!(
-                    "the chine, where the contour turns into a side steeper than {SIDE_DEADRISE_DEG} deg (half-breadth \
-                     {widest:.4} m, {:.4} m above the keel)",
-                    w[0][1]
-                ),
-            );
+    let mut k = half.len() - 1;
+    while k > 0 {
+        let (dy, dz) = (half[k][0] - half[k - 1][0], half[k][1] - half[k - 1][1]);
+        if dz > 0.0 && dz.atan2(dy.abs()) >= steep {
+            k -= 1;
+        } else {
             break;
         }
     }
+    let widest = half[..=k].iter().map(|p| p[0]).fold(0.0, f64::max);
+    let mut target = if k + 1 < half.len() && widest > 0.0 {
+        (
+            widest,
+            format!(
+                "the chine, above which the contour is a side steeper than {SIDE_DEADRISE_DEG} deg up to the deck \
+                 edge (half-breadth {widest:.4} m, {:.4} m above the keel)",
+                half[k][1]
+            ),
+        )
+    } else {
+        (b, format!("the widest point (half-breadth {b:.4} m)"))
+    };
+    let len = half_contour_length(section);
     let top = sensors
         .iter()
-        .filter_map(|s| {
-            point_at_arc(
-                section,
-                (s.s_m + 0.5 * s.width_m).min(half_contour_length(section)),
-            )
-        })
+        .filter_map(|s| point_at_arc(section, (s.s_m + 0.5 * s.width_m).min(len)))
         .map(|p| p[0])
         .fold(0.0, f64::max);
     if top > target.0 {
@@ -122,22 +130,32 @@ pub fn time_to_depth(m: &Motion, depth: f64, t_max: f64) -> Option<(f64, bool)> 
 /// or past the highest sensor: [`wetting_target`]) and the force has passed its maximum there
 /// ([`END_MARGIN`] times the wetting time), or when the entry velocity has fallen to zero, whichever
 /// comes first; never past the keel reaching 0.9 of the section height (the deck would go under).
-pub fn end_time(section: &Section, m: &Motion, sensors: &[SensorSpec]) -> Choice {
+pub fn end_time(section: &Section, m: &Motion, sensors: &[SensorSpec], dp: f64) -> Choice {
     let h = section.height();
     let t_max = 60.0;
-    let deck = time_to_depth(m, 0.9 * h, t_max);
     let (y_target, what) = wetting_target(section, sensors);
-    let wet = wetting_penetration(section, y_target).and_then(|d| time_to_depth(m, d, t_max));
-    match (wet, deck) {
-        (Some((t, true)), _) => Choice {
+    let min_depth = MIN_PENETRATION_DP * dp;
+    let (depth, what) = match wetting_penetration(section, y_target) {
+        Some(d) if d >= min_depth => (d, what),
+        _ => (
+            min_depth,
+            format!(
+                "{what}, which a flat keel reaches at contact; the run goes on to a keel depth of \
+                 {MIN_PENETRATION_DP} particle spacings"
+            ),
+        ),
+    };
+    let depth = depth.min(0.9 * h);
+    match time_to_depth(m, depth, t_max) {
+        Some((t, true)) => Choice {
             value: t,
             note: format!(
                 "t_end = {t:.5} s: the entry velocity falls to zero before the wetting reaches {what}"
             ),
         },
-        (Some((t, false)), deck) => {
+        Some((t, false)) => {
             let tm = END_MARGIN * t;
-            let cap = deck.map_or(f64::INFINITY, |d| d.0);
+            let cap = time_to_depth(m, 0.9 * h, t_max).map_or(f64::INFINITY, |d| d.0);
             let rev = time_to_depth(m, f64::INFINITY, tm.min(t_max))
                 .filter(|r| r.1)
                 .map_or(f64::INFINITY, |r| r.0);
@@ -151,20 +169,11 @@ pub fn end_time(section: &Section, m: &Motion, sensors: &[SensorSpec]) -> Choice
                 ),
             }
         }
-        (None, Some((t, rev))) => Choice {
-            value: t,
-            note: if rev {
-                format!("t_end = {t:.5} s: the entry velocity falls to zero")
-            } else {
-                format!(
-                    "t_end = {t:.5} s: keel 0.9 x the section height deep (Wagner's wetting condition has no \
-                     solution for this shape)"
-                )
-            },
-        },
-        (None, None) => Choice {
+        None => Choice {
             value: t_max,
-            note: format!("t_end = {t_max} s: the keel never reaches the deck within that time"),
+            note: format!(
+                "t_end = {t_max} s: the keel never gets {depth:.4} m deep within that time"
+            ),
         },
     }
 }

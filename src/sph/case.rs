@@ -263,7 +263,7 @@ pub fn resolve(
             t
         }
         None => {
-            let c = automatic::end_time(section, &built, &sensors);
+            let c = automatic::end_time(section, &built, &sensors, dp);
             notes.push(c.note);
             c.value
         }
