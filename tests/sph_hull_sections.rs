@@ -22,19 +22,6 @@ fn hull(name: &str) -> Hull {
     .unwrap()
 }
 
-/// The hull's sensors on the station at x.
-fn sensors_at(h: &Hull, x: f64) -> Vec<SensorSpec> {
-    h.sensors
-        .iter()
-        .filter(|s| (s.x - x).abs() < 1e-6)
-        .map(|s| SensorSpec {
-            name: s.name.clone(),
-            s_m: s.girth,
-            width_m: s.diameter,
-        })
-        .collect()
-}
-
 /// Run a section with a motion at the coarse test resolution; the run must reach its end and every
 /// reported number must be finite.
 fn runs_to_the_end(label: &str, section: &Section, motion: MotionSpec, sensors: Vec<SensorSpec>) {
@@ -92,7 +79,7 @@ fn bundled_bow_stations_complete_at_constant_speeds() {
                     &format!("{name} {f:.3} Lpp at {v} m/s"),
                     &section,
                     MotionSpec::Constant { speed_m_s: v },
-                    sensors_at(&h, x),
+                    impact::station_sensors(&h, x),
                 );
             }
         }
@@ -142,7 +129,7 @@ fn ochi_stations_complete_under_the_regular_wave_entry_profile() {
             ),
             &section,
             impact::entry_motion(entry),
-            sensors_at(&h, st.x),
+            impact::station_sensors(&h, st.x),
         );
         ran += 1;
     }

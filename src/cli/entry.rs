@@ -29,7 +29,7 @@ Examples:
 const SECTION_EXAMPLES: &str = "\
 Examples:
   slamtool entry section hulls/ochi-vform.toml --station 0.1 --speed 2.0 -o out/ochi-st0.1
-  slamtool entry section hulls/car-carrier-hm2005.toml --station 0.05 --speed 3 --dp 0.002
+  slamtool entry section hulls/car-carrier-hm2005.toml --station 0.05 --speed 3 --resolution medium
   slamtool entry section hulls/ochi-vform.toml --x-m 2.4 --speed 1.5 --json";
 
 const CASE_EXAMPLES: &str = "\
@@ -263,19 +263,8 @@ fn hull_section(a: SectionArgs) -> slamtool::Result<()> {
     let hull = slamtool::hull::Hull::from_file(&a.hull)?;
     let st = a.station.resolve(&hull)?;
     let x = st.x;
-    let hs = hull.section_at(x)?;
-    let section = Section::from_half_points(hs.points.clone())?;
-    // Hull sensors on this station: girth from the keel and physical diameter.
-    let sensors: Vec<SensorSpec> = hull
-        .sensors
-        .iter()
-        .filter(|s| (s.x - x).abs() < 1e-6)
-        .map(|s| SensorSpec {
-            name: s.name.clone(),
-            s_m: s.girth,
-            width_m: s.diameter,
-        })
-        .collect();
+    let section = slamtool::impact::entry_section(&hull, x)?;
+    let sensors = slamtool::impact::station_sensors(&hull, x);
     let stem = a
         .hull
         .file_stem()

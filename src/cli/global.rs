@@ -24,7 +24,8 @@ pub enum ColorWhen {
 /// Options accepted by every command, before or after the subcommand.
 #[derive(Debug, Clone, Args)]
 pub struct GlobalArgs {
-    /// No progress bars or notes on stderr; results, warnings and errors are still printed.
+    /// No progress bars or notes on stderr; results and errors are still printed, and warnings too
+    /// except with --json, whose output carries them.
     #[arg(short, long, global = true, help_heading = "Global options")]
     pub quiet: bool,
     /// Colour the help, warnings and errors.

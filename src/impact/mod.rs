@@ -12,8 +12,8 @@ use crate::hull::{Hull, LoadingCondition};
 use crate::seakeeping::analysis::Station;
 use crate::seakeeping::relative_motion::KeelEntry;
 use crate::seakeeping::section::HalfSection;
-use crate::sph::MotionSpec;
 use crate::sph::body::Section;
+use crate::sph::{MotionSpec, SensorSpec};
 
 /// The seakeeping station at `aft_of_fp` (fraction of Lpp aft of the FP) in `loading`: its local draft
 /// from the wetted half section and its keel-to-deck height.
@@ -59,6 +59,20 @@ pub fn seakeeping_station(
 pub fn entry_section(hull: &Hull, x: f64) -> Result<Section> {
     let hs = hull.section_at(x)?;
     Section::from_half_points(hs.points.clone())
+}
+
+/// The hull's pressure sensors on the station at x, as sensors of a 2D run: girth from the keel along
+/// the contour and physical diameter.
+pub fn station_sensors(hull: &Hull, x: f64) -> Vec<SensorSpec> {
+    hull.sensors
+        .iter()
+        .filter(|s| (s.x - x).abs() < 1e-6)
+        .map(|s| SensorSpec {
+            name: s.name.clone(),
+            s_m: s.girth,
+            width_m: s.diameter,
+        })
+        .collect()
 }
 
 /// The prescribed motion of a 2D run: the downward entry velocity from keel entry until it reverses
