@@ -7,12 +7,13 @@ use std::path::PathBuf;
 
 use clap::Args;
 use slamtool::hull::{Hull, Hydrostatics};
+use slamtool::impact;
 use slamtool::provenance::{Provenance, TOOL};
 use slamtool::report::{self, sanity};
 use slamtool::sea::SeaState;
 use slamtool::seakeeping::ShipModel;
-use slamtool::seakeeping::analysis::{self, Request, Station};
-use slamtool::seakeeping::section::{HalfSection, SectionMethod};
+use slamtool::seakeeping::analysis::{self, Request};
+use slamtool::seakeeping::section::SectionMethod;
 use slamtool::seakeeping::slamming::DEFAULT_SLAM_PROBABILITY_LIMIT;
 use slamtool::{Error, Result};
 
@@ -142,12 +143,7 @@ pub fn run(a: MotionsArgs) -> Result<()> {
         a.x_m.iter().map(|&x| hull.aft_of_fp(x)).collect()
     };
     if at.is_empty() {
-        at = hull.sensors.iter().map(|s| hull.aft_of_fp(s.x)).collect();
-        at.sort_by(f64::total_cmp);
-        at.dedup_by(|p, q| (*p - *q).abs() < 1e-6);
-        if at.is_empty() {
-            at = vec![0.05, 0.1, 0.15, 0.2];
-        }
+        at = impact::sensor_stations(&hull);
     }
     let mut stations = Vec::new();
     for &f in &at {
@@ -159,44 +155,23 @@ pub fn run(a: MotionsArgs) -> Result<()> {
         };
         let st = station::check(&hull, x, given)?;
         warnings.extend(st.warning);
-        let sec = hull.section_at(x)?;
-        let z_w = loading.draft_at(x, hull.lpp);
-        let wet: Vec<[f64; 2]> = sec.wetted(z_w).iter().map(|p| [p[0], p[1] - z_w]).collect();
-        let mut pts: Vec<[f64; 2]> = Vec::new();
-        for q in wet {
-            if pts
-                .last()
-                .is_none_or(|l: &[f64; 2]| (l[0] - q[0]).hypot(l[1] - q[1]) > 1e-9)
-            {
-                pts.push(q);
-            }
-        }
-        if pts.len() < 2 {
-            return Err(Error::Invalid(format!(
-                "{}: the section there is dry at loading '{}'",
-                st.given, loading.name
-            )));
-        }
-        let h = HalfSection::new(pts)?;
-        stations.push(Station::new(hull.lpp, f, &h, sec.deck_z() - sec.keel_z()));
+        stations.push(
+            impact::seakeeping_station(&hull, loading, f)
+                .map_err(|e| Error::Invalid(format!("{}: {e}", st.given)))?,
+        );
     }
     let method = match a.method {
         Method::CloseFit => SectionMethod::FrankCloseFit,
         Method::Lewis => SectionMethod::Lewis,
     };
     let req = Request {
-        speeds,
         lambda_over_l: a.lambda_over_l.clone(),
-        regular: sea.regular.clone(),
-        irregular: sea.irregular.clone(),
-        stations,
         swell_up: a.swell_up,
         slam_probability_limit: a.slam_limit,
         method,
         spectrum_samples: a.spectrum_samples.max(3),
-        profile_samples: 41,
         frequency_table_spacing: (a.frequency_spacing > 0.0).then_some(a.frequency_spacing),
-        water_depth: sea.water_depth_m,
+        ..Request::for_sea(&sea, speeds, stations)
     };
     let report = analysis::run(&model, &req)?;
     warnings.extend(sanity::negative_gm(&Hydrostatics::compute(&hull, loading)));
