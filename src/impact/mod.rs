@@ -57,7 +57,12 @@ pub fn seakeeping_station(
 /// The stations that carry sensors in the hull file, as fractions of Lpp aft of the FP (sorted, without
 /// repeats), or 0.05, 0.1, 0.15 and 0.2 Lpp when the hull has no sensors.
 pub fn sensor_stations(hull: &Hull) -> Vec<f64> {
-    let mut at: Vec<f64> = hull.sensors.iter().map(|s| hull.aft_of_fp(s.x)).collect();
+    // Rounded to 1e-9 Lpp: x -> fraction of Lpp is not exact in floating point (0.093 -> 0.09299999999999997).
+    let mut at: Vec<f64> = hull
+        .sensors
+        .iter()
+        .map(|s| (hull.aft_of_fp(s.x) * 1e9).round() / 1e9)
+        .collect();
     at.sort_by(f64::total_cmp);
     at.dedup_by(|p, q| (*p - *q).abs() < 1e-6);
     if at.is_empty() {
