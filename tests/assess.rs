@@ -164,6 +164,12 @@ fn screen_runs_sph_for_one_event_per_station() {
             "{f}: SPH for the highest analytic pressure"
         );
     }
+    for st in &a.stations {
+        assert!(
+            st.design_pressure_pa.iter().all(|d| d.source == "sph"),
+            "design values where SPH ran come from SPH only: {st:?}"
+        );
+    }
 }
 
 #[test]

@@ -234,8 +234,8 @@ pub fn run(
         "convergence_levels": s.study.levels,
         "convergence_ratio": s.study.ratio,
         "strips": s.strips,
-        "design_value": "per sensor and station, the largest over events of the SPH raw peak where SPH ran, \
-                         otherwise of the analytic (MLM) peak",
+        "design_value": "per sensor and station, the largest SPH raw peak over the events with an SPH run at \
+                         that station, or the largest analytic (MLM) peak where none has one",
     });
     let mut inputs = hull.input_files();
     inputs.push(sea.source.as_path());

@@ -64,7 +64,7 @@ impl Default for Settings {
             loading: None,
             stations: Vec::new(),
             speeds: None,
-            fidelity: Fidelity::Sph,
+            fidelity: Fidelity::Screen,
             overrides: Overrides::default(),
             study: StudyPlan::default(),
             strips: 31,

@@ -103,7 +103,8 @@ pub struct DesignValue {
     pub wave: String,
 }
 
-/// Per station: design pressure per sensor and peak section force, each the maximum over events.
+/// Per station: design pressure per sensor and peak section force, each the maximum over the events with
+/// an SPH run at that station, or over all events where none has one (analytic values).
 #[derive(Debug, Clone, Serialize)]
 pub struct StationResult {
     pub station: f64,
@@ -139,12 +140,18 @@ pub struct Assessment {
 pub fn stations(events: &[EventResult], at: &[f64]) -> Vec<StationResult> {
     at.iter()
         .map(|&f| {
-            let here: Vec<&EventResult> = events
+            let all: Vec<&EventResult> = events
                 .iter()
                 .filter(|e| (e.station - f).abs() < 1e-9)
                 .collect();
+            // Where SPH ran at a station, its design values come from the SPH runs only: the analytic
+            // values of the other events are screening estimates (on a flat keel the water-hammer bound),
+            // not design pressures.
+            let with_sph: Vec<&EventResult> =
+                all.iter().copied().filter(|e| e.sph.is_some()).collect();
+            let here = if with_sph.is_empty() { &all } else { &with_sph };
             let mut names: Vec<String> = Vec::new();
-            for e in &here {
+            for e in &all {
                 for n in e
                     .analytic
                     .iter()
@@ -157,7 +164,7 @@ pub fn stations(events: &[EventResult], at: &[f64]) -> Vec<StationResult> {
             }
             let best = |get: &dyn Fn(&EventResult) -> Option<(f64, &'static str)>, name: &str| {
                 let mut out: Option<DesignValue> = None;
-                for e in &here {
+                for e in here {
                     if let Some((v, src)) = get(e)
                         && out.as_ref().is_none_or(|b| v > b.value)
                     {
@@ -174,7 +181,7 @@ pub fn stations(events: &[EventResult], at: &[f64]) -> Vec<StationResult> {
             };
             StationResult {
                 station: f,
-                x_m: here.first().map_or(f64::NAN, |e| e.x_m),
+                x_m: all.first().map_or(f64::NAN, |e| e.x_m),
                 design_pressure_pa: names
                     .iter()
                     .filter_map(|n| best(&|e: &EventResult| e.sensor_peak(n), n))
@@ -183,11 +190,8 @@ pub fn stations(events: &[EventResult], at: &[f64]) -> Vec<StationResult> {
                     &|e: &EventResult| e.force_peak(),
                     "section force",
                 ),
-                slamming_events: here
-                    .iter()
-                    .filter(|e| e.slam_flag == SlamFlag::Slam)
-                    .count(),
-                emerging_events: here
+                slamming_events: all.iter().filter(|e| e.slam_flag == SlamFlag::Slam).count(),
+                emerging_events: all
                     .iter()
                     .filter(|e| e.entry_velocity_m_per_s.is_some())
                     .count(),

@@ -47,10 +47,10 @@ pub struct AssessArgs {
         allow_negative_numbers = true
     )]
     speeds: Vec<f64>,
-    /// analytic: generalised Wagner + MLM for every event (seconds); sph: SPH for every event, with the
-    /// analytic estimate and a convergence statement beside each peak; screen: analytic everywhere, then
-    /// SPH for the governing event of each station.
-    #[arg(long, value_enum, default_value = "sph")]
+    /// screen: analytic everywhere, then SPH for the governing event of each station (highest analytic
+    /// sensor pressure); sph: SPH for every event, with the analytic estimate and a convergence statement
+    /// beside each peak; analytic: generalised Wagner + MLM for every event (seconds).
+    #[arg(long, value_enum, default_value = "screen")]
     fidelity: Fidelity,
     /// Resolution of the SPH runs.
     #[arg(long, value_enum, default_value = "coarse")]
