@@ -223,7 +223,12 @@ pub fn run(
         });
     }
     let failed_runs = events.iter().filter(|e| e.failed.is_some()).count();
-    let stations = results::stations(&events, &plan.stations);
+    let at: Vec<(f64, f64)> = plan
+        .stations
+        .iter()
+        .map(|&f| (f, hull.station_x(f)))
+        .collect();
+    let stations = results::stations(&events, &at);
     let settings = serde_json::json!({
         "loading": plan.loading,
         "stations": plan.stations,

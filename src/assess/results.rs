@@ -136,10 +136,11 @@ pub struct Assessment {
     pub warnings: Vec<String>,
 }
 
-/// The per-station design values of a list of events.
-pub fn stations(events: &[EventResult], at: &[f64]) -> Vec<StationResult> {
+/// The per-station design values of a list of events at the stations `at` (fraction of Lpp aft of the
+/// FP, x in m from midship).
+pub fn stations(events: &[EventResult], at: &[(f64, f64)]) -> Vec<StationResult> {
     at.iter()
-        .map(|&f| {
+        .map(|&(f, x)| {
             let all: Vec<&EventResult> = events
                 .iter()
                 .filter(|e| (e.station - f).abs() < 1e-9)
@@ -181,7 +182,7 @@ pub fn stations(events: &[EventResult], at: &[f64]) -> Vec<StationResult> {
             };
             StationResult {
                 station: f,
-                x_m: all.first().map_or(f64::NAN, |e| e.x_m),
+                x_m: x,
                 design_pressure_pa: names
                     .iter()
                     .filter_map(|n| best(&|e: &EventResult| e.sensor_peak(n), n))

@@ -192,7 +192,27 @@ fn tables(a: &Assessment) -> String {
         }
     }
     if !a.irregular.is_empty() {
-        s += &format!("\nirregular seas: {}\n", assess::plan::IRREGULAR_NOTE);
+        s += &format!(
+            "\nirregular seas ({}):\n  speed_m_per_s  sea              station  slam_probability  slams_per_hour  extreme_entry_velocity_m_per_s\n",
+            assess::plan::IRREGULAR_NOTE
+        );
+        for ir in &a.irregular {
+            let stations = ir["stations"].as_array().cloned().unwrap_or_default();
+            for (k, st) in stations.iter().enumerate() {
+                let f = a.stations.get(k).map_or(f64::NAN, |s| s.station);
+                s += &format!(
+                    "  {:<13.3}  {:<15}  {:<7}  {:<16.4}  {:<14.1}  {}\n",
+                    ir["speed_m_per_s"].as_f64().unwrap_or(f64::NAN),
+                    ir["sea"].as_str().unwrap_or(""),
+                    f,
+                    st["slam_probability"].as_f64().unwrap_or(f64::NAN),
+                    st["slams_per_hour"].as_f64().unwrap_or(f64::NAN),
+                    ir["extreme_entry_velocity_m_per_s"][k]
+                        .as_f64()
+                        .map_or("-".into(), |v| format!("{v:.3}"))
+                );
+            }
+        }
     }
     s
 }
