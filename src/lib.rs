@@ -22,6 +22,7 @@
 //! Each step is one module that owns its types; data flows one way.
 
 pub mod analytic;
+pub mod assess;
 pub mod error;
 pub mod files;
 pub mod hull;

@@ -6,6 +6,7 @@ use std::process::ExitCode;
 
 use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 
+mod assess;
 mod bench;
 mod completions;
 mod entry;
@@ -26,6 +27,7 @@ const TOP_EXAMPLES: &str = "\
 Examples:
   slamtool hull info hulls/ochi-vform.toml --loading test-condition
   slamtool motions hulls/ochi-vform.toml --sea sea_states/ochi-1958.toml -o reports/ochi-motions
+  slamtool assess hulls/ochi-vform.toml --sea sea_states/ochi-1958.toml
   slamtool entry wedge --deadrise-deg 30 --speed 5 -o out/wedge30";
 
 /// 2D+t ship-slamming design tool: strip theory, SPH water entry, analytic cross-checks, design reports.
@@ -58,6 +60,9 @@ enum Command {
     /// Sea states: regular waves, spectra, speeds.
     #[command(subcommand, after_long_help = sea::EXAMPLES)]
     Sea(sea::SeaCommand),
+    /// The 2D+t assessment: strip theory, water entry of every slamming station, design pressures.
+    #[command(after_long_help = assess::EXAMPLES)]
+    Assess(assess::AssessArgs),
     /// Strip-theory motions, relative motion at the bow, slam statistics and operability.
     #[command(after_long_help = motions::EXAMPLES)]
     Motions(motions::MotionsArgs),
@@ -119,6 +124,7 @@ pub fn main() -> ExitCode {
         Command::Entry(c) => entry::run(c),
         Command::Bench(a) => bench::run(a),
         Command::Sea(c) => sea::run(c),
+        Command::Assess(a) => assess::run(a),
         Command::Motions(a) => motions::run(a),
         Command::Completions(a) => completions::run(a, &mut command()),
         Command::Man(a) => man::run(a, command()),

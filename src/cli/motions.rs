@@ -7,6 +7,7 @@ use std::path::PathBuf;
 
 use clap::Args;
 use slamtool::hull::{Hull, Hydrostatics};
+use slamtool::impact;
 use slamtool::provenance::{Provenance, TOOL};
 use slamtool::report::{self, sanity};
 use slamtool::sea::SeaState;
@@ -142,12 +143,7 @@ pub fn run(a: MotionsArgs) -> Result<()> {
         a.x_m.iter().map(|&x| hull.aft_of_fp(x)).collect()
     };
     if at.is_empty() {
-        at = hull.sensors.iter().map(|s| hull.aft_of_fp(s.x)).collect();
-        at.sort_by(f64::total_cmp);
-        at.dedup_by(|p, q| (*p - *q).abs() < 1e-6);
-        if at.is_empty() {
-            at = vec![0.05, 0.1, 0.15, 0.2];
-        }
+        at = impact::sensor_stations(&hull);
     }
     let mut stations = Vec::new();
     for &f in &at {
@@ -160,7 +156,7 @@ pub fn run(a: MotionsArgs) -> Result<()> {
         let st = station::check(&hull, x, given)?;
         warnings.extend(st.warning);
         stations.push(
-            slamtool::impact::seakeeping_station(&hull, loading, f)
+            impact::seakeeping_station(&hull, loading, f)
                 .map_err(|e| Error::Invalid(format!("{}: {e}", st.given)))?,
         );
     }
@@ -169,18 +165,13 @@ pub fn run(a: MotionsArgs) -> Result<()> {
         Method::Lewis => SectionMethod::Lewis,
     };
     let req = Request {
-        speeds,
         lambda_over_l: a.lambda_over_l.clone(),
-        regular: sea.regular.clone(),
-        irregular: sea.irregular.clone(),
-        stations,
         swell_up: a.swell_up,
         slam_probability_limit: a.slam_limit,
         method,
         spectrum_samples: a.spectrum_samples.max(3),
-        profile_samples: 41,
         frequency_table_spacing: (a.frequency_spacing > 0.0).then_some(a.frequency_spacing),
-        water_depth: sea.water_depth_m,
+        ..Request::for_sea(&sea, speeds, stations)
     };
     let report = analysis::run(&model, &req)?;
     warnings.extend(sanity::negative_gm(&Hydrostatics::compute(&hull, loading)));

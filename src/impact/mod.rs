@@ -54,6 +54,23 @@ pub fn seakeeping_station(
     ))
 }
 
+/// The stations that carry sensors in the hull file, as fractions of Lpp aft of the FP (sorted, without
+/// repeats), or 0.05, 0.1, 0.15 and 0.2 Lpp when the hull has no sensors.
+pub fn sensor_stations(hull: &Hull) -> Vec<f64> {
+    // Rounded to 1e-9 Lpp: x -> fraction of Lpp is not exact in floating point (0.093 -> 0.09299999999999997).
+    let mut at: Vec<f64> = hull
+        .sensors
+        .iter()
+        .map(|s| (hull.aft_of_fp(s.x) * 1e9).round() / 1e9)
+        .collect();
+    at.sort_by(f64::total_cmp);
+    at.dedup_by(|p, q| (*p - *q).abs() < 1e-6);
+    if at.is_empty() {
+        at = vec![0.05, 0.1, 0.15, 0.2];
+    }
+    at
+}
+
 /// The 2D section that enters the water at x (m from midship): the hull section from the keel to the
 /// deck edge, keel at the origin.
 pub fn entry_section(hull: &Hull, x: f64) -> Result<Section> {

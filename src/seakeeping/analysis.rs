@@ -66,6 +66,29 @@ pub struct Request {
     pub water_depth: Option<f64>,
 }
 
+impl Request {
+    /// The request for a sea-state file at `speeds` (m/s) and `stations`, with the defaults of
+    /// `slamtool motions`: Frank close-fit sections, no swell-up, the default slam-probability limit, 30
+    /// samples per spectrum, 41 per entry profile, the frequency table at 0.1 in ln w, and no RAO table
+    /// (set `lambda_over_l` for one).
+    pub fn for_sea(sea: &crate::sea::SeaState, speeds: Vec<f64>, stations: Vec<Station>) -> Self {
+        Self {
+            speeds,
+            lambda_over_l: Vec::new(),
+            regular: sea.regular.clone(),
+            irregular: sea.irregular.clone(),
+            stations,
+            swell_up: 1.0,
+            slam_probability_limit: slamming::DEFAULT_SLAM_PROBABILITY_LIMIT,
+            method: SectionMethod::FrankCloseFit,
+            spectrum_samples: 30,
+            profile_samples: 41,
+            frequency_table_spacing: Some(0.1),
+            water_depth: sea.water_depth_m,
+        }
+    }
+}
+
 #[derive(Debug, Clone, Serialize)]
 pub struct RegularResult {
     pub wave: String,

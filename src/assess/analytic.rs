@@ -1,0 +1,102 @@
+//! The analytic estimate of an event: the generalised Wagner force of the section (Wagner 1932 with the
+//! wetting condition for the actual shape) and the modified Logvinovich (MLM; Korobkin 2004) mean pressure
+//! on every sensor panel, along the event's entry-velocity history v(t).
+
+use serde::{Deserialize, Serialize};
+
+use super::plan::EntryCase;
+use crate::analytic::generalised_wagner;
+use crate::analytic::logvinovich_mlm::Mlm;
+use crate::error::{Error, Result};
+use crate::loads::peaks::peak;
+use crate::sph::MotionSpec;
+
+/// Water density of the estimates (kg/m3), as the SPH runs use by default.
+pub const RHO: f64 = 1000.0;
+
+/// One sensor's analytic peak.
+#[derive(Debug, Clone, Serialize, Deserialize, PartialEq)]
+pub struct SensorEstimate {
+    pub name: String,
+    pub peak_pa: f64,
+    pub peak_time_s: f64,
+    pub impulse_pa_s: f64,
+}
+
+/// The analytic estimate of one event.
+#[derive(Debug, Clone, Serialize, Deserialize, PartialEq)]
+pub struct Estimate {
+    /// Generalised Wagner section force (N/m): peak and time.
+    pub force_peak_n_per_m: f64,
+    pub force_peak_time_s: f64,
+    /// MLM mean pressure on each sensor panel.
+    pub sensors: Vec<SensorEstimate>,
+    /// Where the models stop or switch to acoustic values.
+    pub notes: Vec<String>,
+}
+
+impl Estimate {
+    /// The largest sensor peak, or the force peak when there are no sensors (to rank events).
+    pub fn ranking(&self) -> f64 {
+        if self.sensors.is_empty() {
+            self.force_peak_n_per_m
+        } else {
+            self.sensors.iter().map(|s| s.peak_pa).fold(0.0, f64::max)
+        }
+    }
+}
+
+/// The (t, v) samples of a prescribed entry motion.
+fn samples(motion: &MotionSpec) -> Result<(Vec<f64>, Vec<f64>)> {
+    match motion {
+        MotionSpec::Prescribed { table } => Ok((
+            table.iter().map(|r| r[0]).collect(),
+            table.iter().map(|r| r[1]).collect(),
+        )),
+        _ => Err(Error::Invalid(
+            "the analytic estimate of an assessment event needs a prescribed entry-velocity table"
+                .into(),
+        )),
+    }
+}
+
+/// Estimate an event's force and sensor pressures.
+pub fn estimate(case: &EntryCase) -> Result<Estimate> {
+    let (t, v) = samples(&case.motion)?;
+    let w = generalised_wagner::estimate(&case.half_points, &t, &v, RHO)?;
+    let f = peak(&w.t, &w.force);
+    let mut notes = w.notes.clone();
+    if let Some(why) = &w.stopped {
+        notes.push(format!("Wagner estimate stops early: {why}"));
+    }
+    let mlm = Mlm::new(&case.half_points, &t, &v, RHO)?;
+    let times = mlm.times();
+    if mlm.acoustic().iter().any(|&a| a) {
+        notes.push(
+            "flat keel: the first samples are in the acoustic stage, where the MLM gives the water-hammer \
+             pressure rho c_w V (an upper bound without air cushioning, not a slamming pressure)"
+                .into(),
+        );
+    }
+    let sensors = case
+        .sensors
+        .iter()
+        .map(|s| {
+            let s1 = (s.s_m - 0.5 * s.width_m).max(0.0);
+            let s2 = s.s_m + 0.5 * s.width_m;
+            let p = peak(&times, &mlm.sensor_history(s1, s2));
+            SensorEstimate {
+                name: s.name.clone(),
+                peak_pa: p.value,
+                peak_time_s: p.time,
+                impulse_pa_s: p.impulse,
+            }
+        })
+        .collect();
+    Ok(Estimate {
+        force_peak_n_per_m: f.value,
+        force_peak_time_s: f.time,
+        sensors,
+        notes,
+    })
+}

@@ -1,0 +1,291 @@
+//! Running an assessment: the analytic estimate of every event, then the SPH runs the fidelity asks for,
+//! in parallel over events (rayon; each run is deterministic and results are collected in plan order, so
+//! they do not depend on the number of threads), each through the [`cache`]. A run that fails is recorded
+//! with its reason and the others finish.
+
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use rayon::prelude::*;
+
+use super::analytic;
+use super::cache;
+use super::plan::{self, Event, Fidelity, Plan, Settings};
+use super::results::{self, Assessment, EventResult, SphRecord, SphSensor};
+use crate::error::{Error, Result};
+use crate::hull::Hull;
+use crate::progress::ProgressHandle;
+use crate::provenance::Provenance;
+use crate::sea::SeaState;
+use crate::sph::body::Section;
+use crate::sph::{self, RunOptions, RunSummary, StudyPlan};
+
+/// The verdict and statement of the peak called `name` in a run's convergence report.
+fn verdict(s: &RunSummary, name: &str) -> (Option<String>, Option<String>) {
+    let Some(c) = &s.convergence else {
+        return (None, None);
+    };
+    match c.peaks.iter().find(|p| p.name == name) {
+        Some(p) => (
+            serde_json::to_value(p.verdict)
+                .ok()
+                .and_then(|v| v.as_str().map(str::to_string)),
+            Some(p.statement.clone()),
+        ),
+        None => (None, None),
+    }
+}
+
+/// What the assessment keeps of a finished run.
+fn record(key: &str, s: &RunSummary) -> SphRecord {
+    SphRecord {
+        key: key.to_string(),
+        dp_m: s.dp_m,
+        force_peak_n_per_m: s.force.summary.raw.value,
+        force_peak_time_s: s.force.summary.raw.time,
+        force_convergence: verdict(s, "section force raw").0,
+        sensors: s
+            .sensors
+            .iter()
+            .map(|q| {
+                let (c, st) = verdict(s, &format!("sensor {} raw", q.name));
+                SphSensor {
+                    name: q.name.clone(),
+                    raw_peak_pa: q.summary.raw.value,
+                    filtered_peak_pa: q.summary.filtered.map(|f| f.value),
+                    peak_time_s: q.summary.raw.time,
+                    impulse_pa_s: q.summary.raw.impulse,
+                    convergence: c,
+                    convergence_statement: st,
+                }
+            })
+            .collect(),
+        stopped_early: s.stopped_early.clone(),
+        warnings: s.warnings.clone(),
+    }
+}
+
+/// One SPH run of an event, from the cache when allowed and present.
+fn sph_event(
+    e: &Event,
+    out: &Path,
+    overrides: &sph::Overrides,
+    study: StudyPlan,
+    use_cache: bool,
+) -> Result<SphRecord> {
+    let case = e
+        .entry
+        .as_ref()
+        .ok_or_else(|| Error::Invalid("no water entry to run".into()))?;
+    let section = Section::from_half_points(case.half_points.clone())?;
+    let setup = sph::case::resolve(
+        &e.label(),
+        &section,
+        &case.motion,
+        case.sensors.clone(),
+        overrides,
+    )?;
+    let key = cache::key(&setup, &study)?;
+    if use_cache && let Some(r) = cache::lookup(out, &key) {
+        return Ok(r);
+    }
+    let tmp = cache::temporary(out, &key)?;
+    let opts = RunOptions {
+        out_dir: Some(tmp.clone()),
+        ..Default::default()
+    };
+    let r = match sph::run_with_convergence(setup, &opts, study) {
+        Ok(r) => r,
+        Err(err) => {
+            let _ = std::fs::remove_dir_all(&tmp);
+            return Err(err);
+        }
+    };
+    let rec = record(&key, &r.summary);
+    cache::commit(out, &key, &tmp, &rec)?;
+    Ok(rec)
+}
+
+/// The events that get an SPH run: every emerging one (`sph`), the governing one of each station by the
+/// analytic estimate (`screen`), or none (`analytic`).
+fn sph_events(plan: &Plan, estimates: &[Option<analytic::Estimate>], f: Fidelity) -> Vec<usize> {
+    let emerging = (0..plan.events.len()).filter(|&i| plan.events[i].entry.is_some());
+    match f {
+        Fidelity::Analytic => Vec::new(),
+        Fidelity::Sph => emerging.collect(),
+        Fidelity::Screen => {
+            let mut out = Vec::new();
+            for &st in &plan.stations {
+                let best = (0..plan.events.len())
+                    .filter(|&i| {
+                        plan.events[i].entry.is_some() && (plan.events[i].station - st).abs() < 1e-9
+                    })
+                    .max_by(|&a, &b| {
+                        let r = |i: usize| estimates[i].as_ref().map_or(0.0, |e| e.ranking());
+                        r(a).total_cmp(&r(b)).then(b.cmp(&a))
+                    });
+                out.extend(best);
+            }
+            out.sort_unstable();
+            out
+        }
+    }
+}
+
+/// Run an assessment of `hull` in `sea` into the folder `out` (created if needed), with progress (runs
+/// done of the total) on `progress`, and write its `summary.json` and `pressures.csv` there.
+pub fn run(
+    hull: &Hull,
+    sea: &SeaState,
+    s: &Settings,
+    out: &Path,
+    progress: &ProgressHandle,
+) -> Result<(Assessment, Vec<PathBuf>)> {
+    let plan = plan::plan(hull, sea, s)?;
+    std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
+    cache::sweep(out);
+    let computed: Vec<Option<Result<analytic::Estimate>>> = plan
+        .events
+        .iter()
+        .map(|e| e.entry.as_ref().map(analytic::estimate))
+        .collect();
+    let analytic_errors: Vec<Option<String>> = computed
+        .iter()
+        .map(|r| match r {
+            Some(Err(err)) => Some(format!("no analytic estimate: {err}")),
+            _ => None,
+        })
+        .collect();
+    let estimates: Vec<Option<analytic::Estimate>> = computed
+        .into_iter()
+        .map(|r| r.and_then(|x| x.ok()))
+        .collect();
+    let jobs = sph_events(&plan, &estimates, s.fidelity);
+    let done = AtomicUsize::new(0);
+    if !jobs.is_empty() {
+        progress.start("assessment runs", jobs.len() as f64, "runs");
+    }
+    let work = || -> Vec<(usize, Result<SphRecord>)> {
+        jobs.par_iter()
+            .map(|&i| {
+                let r = sph_event(&plan.events[i], out, &s.overrides, s.study, s.use_cache);
+                let n = done.fetch_add(1, Ordering::Relaxed) + 1;
+                progress.update(n as f64, &plan.events[i].label());
+                (i, r)
+            })
+            .collect()
+    };
+    let ran = match s.threads {
+        Some(n) => rayon::ThreadPoolBuilder::new()
+            .num_threads(n.max(1))
+            .build()
+            .map_err(|e| Error::Invalid(format!("thread pool: {e}")))?
+            .install(work),
+        None => work(),
+    };
+    if !jobs.is_empty() {
+        progress.finish();
+    }
+    let mut sph_of: Vec<Option<Result<SphRecord>>> = plan.events.iter().map(|_| None).collect();
+    for (i, r) in ran {
+        sph_of[i] = Some(r);
+    }
+    let mut events = Vec::new();
+    for (i, e) in plan.events.iter().enumerate() {
+        let mut warnings = Vec::new();
+        warnings.extend(analytic_errors[i].clone());
+        let (sph, failed) = match sph_of[i].take() {
+            Some(Ok(r)) => {
+                if let Some(why) = &r.stopped_early {
+                    warnings.push(format!("the SPH run stopped early: {why}"));
+                }
+                warnings.extend(r.warnings.iter().cloned());
+                (Some(r), None)
+            }
+            Some(Err(err)) => (None, Some(format!("SPH run failed: {err}"))),
+            None => (None, None),
+        };
+        if let Some(a) = &estimates[i] {
+            warnings.extend(a.notes.iter().map(|n| format!("analytic: {n}")));
+        }
+        events.push(EventResult {
+            station: e.station,
+            x_m: e.x,
+            speed_m_per_s: e.speed_m_s,
+            wave: e.wave.clone(),
+            slam_flag: e.flag,
+            entry_velocity_m_per_s: e.entry_velocity_m_s,
+            analytic: estimates[i].clone(),
+            run_folder: sph.as_ref().map(|r| format!("cache/{}", r.key)),
+            sph,
+            failed,
+            warnings,
+        });
+    }
+    let failed_runs = events.iter().filter(|e| e.failed.is_some()).count();
+    let at: Vec<(f64, f64)> = plan
+        .stations
+        .iter()
+        .map(|&f| (f, hull.station_x(f)))
+        .collect();
+    let stations = results::stations(&events, &at);
+    let settings = serde_json::json!({
+        "loading": plan.loading,
+        "stations": plan.stations,
+        "speeds_m_per_s": plan.speeds,
+        "fidelity": s.fidelity.name(),
+        "resolution": s.overrides.level,
+        "particles_per_half_beam": s.overrides.particles_per_half_beam,
+        "convergence_levels": s.study.levels,
+        "convergence_ratio": s.study.ratio,
+        "strips": s.strips,
+        "design_value": "per sensor and station, the largest SPH raw peak over the events with an SPH run at \
+                         that station, or the largest analytic (MLM) peak where none has one",
+    });
+    let mut inputs = hull.input_files();
+    inputs.push(sea.source.as_path());
+    let provenance = Provenance::new(&inputs, settings.clone())?;
+    let irregular = plan
+        .motions
+        .speeds
+        .iter()
+        .flat_map(|sp| {
+            sp.irregular.iter().map(move |ir| {
+                serde_json::json!({
+                    "speed_m_per_s": sp.speed_m_s,
+                    "sea": ir.sea,
+                    "hs_m": ir.hs_m,
+                    "tp_s": ir.tp_s,
+                    "duration_h": ir.duration_h,
+                    "stations": ir.stations,
+                    "extreme_entry_velocity_m_per_s": ir.extreme_velocity_m_s,
+                    "extreme_definition": "most probable largest entry velocity in the expected number of \
+                                           slams over duration_h",
+                    "design_events": "not run",
+                })
+            })
+        })
+        .collect();
+    let a = Assessment {
+        tool: results::tool(),
+        provenance,
+        hull: hull.name.clone(),
+        loading: plan.loading.clone(),
+        fidelity: s.fidelity.name().to_string(),
+        settings,
+        slam_threshold_velocity_m_per_s: plan.motions.slam_threshold_velocity_m_s,
+        events,
+        stations,
+        irregular,
+        failed_runs,
+        warnings: plan.warnings.clone(),
+    };
+    let sensors_of = |f: f64| -> Vec<String> {
+        crate::impact::station_sensors(hull, hull.station_x(f))
+            .into_iter()
+            .map(|q| q.name)
+            .collect()
+    };
+    let written = results::write(out, &a, &sensors_of)?;
+    Ok((a, written))
+}

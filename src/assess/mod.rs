@@ -1,0 +1,27 @@
+//! `slamtool assess`: the 2D+t assessment of a hull in a sea state (Veen 2010, ch. 6), from strip-theory
+//! relative motion to station pressures and section loads.
+//!
+//! The layers, in the order the data flows:
+//!
+//! * [`plan`]: strip theory at every speed and regular wave of the sea-state file, at the stations that
+//!   carry sensors; each station whose keel emerges gives one water-entry event (its section, driven by
+//!   the entry-velocity history after keel entry, with the station's sensors). Where the keel stays in the
+//!   water the station is recorded as "no slam", with the flag `slamtool motions` prints (Ochi 1964).
+//!   Irregular seas are reported as slam statistics only (probability, slams per hour, most probable
+//!   largest entry velocity); design events for them are not run.
+//! * [`analytic`]: generalised Wagner force and modified Logvinovich sensor pressures for an event.
+//! * [`execute`]: the SPH runs (with a convergence companion), in parallel, through the [`cache`].
+//! * [`results`]: per event, per station (design pressure per sensor: the maximum over events) and the
+//!   files (`summary.json`, `pressures.csv`).
+//! * [`limits`]: the design-pressure gate.
+
+pub mod analytic;
+pub mod cache;
+pub mod execute;
+pub mod limits;
+pub mod plan;
+pub mod results;
+
+pub use execute::run;
+pub use plan::{Event, Fidelity, Plan, Settings};
+pub use results::{Assessment, DesignValue, EventResult, SphRecord, StationResult};

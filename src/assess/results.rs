@@ -1,0 +1,297 @@
+//! The results of an assessment: per event (station x speed x wave), per station (the design pressure
+//! of each sensor, the maximum over events, and the peak section force), and the files they are written
+//! to: `summary.json` and the tidy `pressures.csv` (one row per station x speed x wave x sensor), both
+//! with provenance. This is the API the report generator reads.
+
+use std::path::{Path, PathBuf};
+
+use serde::{Deserialize, Serialize};
+
+use super::analytic::Estimate;
+use crate::error::{Error, Result};
+use crate::files::write_text_atomic;
+use crate::provenance::{Provenance, TOOL, tidy_numbers};
+use crate::report::sanity::SlamFlag;
+
+/// One sensor of an SPH run.
+#[derive(Debug, Clone, Serialize, Deserialize, PartialEq)]
+pub struct SphSensor {
+    pub name: String,
+    pub raw_peak_pa: f64,
+    pub filtered_peak_pa: Option<f64>,
+    pub peak_time_s: f64,
+    pub impulse_pa_s: f64,
+    /// Convergence verdict of the raw peak (converged, acceptable, not_converged, not_assessed,
+    /// not_wetted) and its statement.
+    pub convergence: Option<String>,
+    pub convergence_statement: Option<String>,
+}
+
+/// What an assessment keeps of an SPH run (also the record in its cache entry).
+#[derive(Debug, Clone, Serialize, Deserialize, PartialEq)]
+pub struct SphRecord {
+    /// Cache key (the run folder is `cache/<key>/`).
+    pub key: String,
+    pub dp_m: f64,
+    pub force_peak_n_per_m: f64,
+    pub force_peak_time_s: f64,
+    pub force_convergence: Option<String>,
+    pub sensors: Vec<SphSensor>,
+    pub stopped_early: Option<String>,
+    pub warnings: Vec<String>,
+}
+
+/// One station at one speed in one regular wave.
+#[derive(Debug, Clone, Serialize)]
+pub struct EventResult {
+    /// Fraction of Lpp aft of the FP.
+    pub station: f64,
+    pub x_m: f64,
+    pub speed_m_per_s: f64,
+    pub wave: String,
+    /// Ochi's criterion as `slamtool motions` reports it: slam, emerges-below-threshold, no-emergence.
+    pub slam_flag: SlamFlag,
+    /// Velocity at keel entry (m/s), when the keel emerges.
+    pub entry_velocity_m_per_s: Option<f64>,
+    /// Generalised Wagner force and MLM sensor pressures (when the keel emerges).
+    pub analytic: Option<Estimate>,
+    /// The SPH run, when one was made and finished.
+    pub sph: Option<SphRecord>,
+    /// Run folder relative to the output folder.
+    pub run_folder: Option<String>,
+    /// Why a computation of this event failed.
+    pub failed: Option<String>,
+    pub warnings: Vec<String>,
+}
+
+impl EventResult {
+    /// The section force peak used for design (N/m): SPH where run, otherwise analytic.
+    pub fn force_peak(&self) -> Option<(f64, &'static str)> {
+        match (&self.sph, &self.analytic) {
+            (Some(s), _) => Some((s.force_peak_n_per_m, "sph")),
+            (None, Some(a)) => Some((a.force_peak_n_per_m, "analytic")),
+            _ => None,
+        }
+    }
+
+    /// A sensor's peak used for design (Pa): the SPH raw peak where run, otherwise the analytic one.
+    pub fn sensor_peak(&self, name: &str) -> Option<(f64, &'static str)> {
+        if let Some(s) = &self.sph {
+            return s
+                .sensors
+                .iter()
+                .find(|q| q.name == name)
+                .map(|q| (q.raw_peak_pa, "sph"));
+        }
+        self.analytic.as_ref().and_then(|a| {
+            a.sensors
+                .iter()
+                .find(|q| q.name == name)
+                .map(|q| (q.peak_pa, "analytic"))
+        })
+    }
+}
+
+/// The design value of one quantity at a station: the maximum over events, and where it comes from.
+#[derive(Debug, Clone, Serialize)]
+pub struct DesignValue {
+    pub name: String,
+    pub value: f64,
+    /// "sph" or "analytic".
+    pub source: &'static str,
+    pub speed_m_per_s: f64,
+    pub wave: String,
+}
+
+/// Per station: design pressure per sensor and peak section force, each the maximum over the events with
+/// an SPH run at that station, or over all events where none has one (analytic values).
+#[derive(Debug, Clone, Serialize)]
+pub struct StationResult {
+    pub station: f64,
+    pub x_m: f64,
+    /// Sensor design pressures (`value` in Pa).
+    pub design_pressure_pa: Vec<DesignValue>,
+    /// Section force peak (`value` in N/m).
+    pub section_force_peak_n_per_m: Option<DesignValue>,
+    /// Events at this station that slam by Ochi's criterion, and that emerge at all.
+    pub slamming_events: usize,
+    pub emerging_events: usize,
+}
+
+/// A whole assessment, written as `summary.json`.
+#[derive(Debug, Clone, Serialize)]
+pub struct Assessment {
+    pub tool: String,
+    pub provenance: Provenance,
+    pub hull: String,
+    pub loading: String,
+    pub fidelity: String,
+    pub settings: serde_json::Value,
+    pub slam_threshold_velocity_m_per_s: f64,
+    pub events: Vec<EventResult>,
+    pub stations: Vec<StationResult>,
+    /// Slam statistics of the irregular seas per speed (no design events are run for them).
+    pub irregular: Vec<serde_json::Value>,
+    pub failed_runs: usize,
+    pub warnings: Vec<String>,
+}
+
+/// The per-station design values of a list of events at the stations `at` (fraction of Lpp aft of the
+/// FP, x in m from midship).
+pub fn stations(events: &[EventResult], at: &[(f64, f64)]) -> Vec<StationResult> {
+    at.iter()
+        .map(|&(f, x)| {
+            let all: Vec<&EventResult> = events
+                .iter()
+                .filter(|e| (e.station - f).abs() < 1e-9)
+                .collect();
+            // Where SPH ran at a station, its design values come from the SPH runs only: the analytic
+            // values of the other events are screening estimates (on a flat keel the water-hammer bound),
+            // not design pressures.
+            let with_sph: Vec<&EventResult> =
+                all.iter().copied().filter(|e| e.sph.is_some()).collect();
+            let here = if with_sph.is_empty() { &all } else { &with_sph };
+            let mut names: Vec<String> = Vec::new();
+            for e in &all {
+                for n in e
+                    .analytic
+                    .iter()
+                    .flat_map(|a| a.sensors.iter().map(|s| &s.name))
+                {
+                    if !names.contains(n) {
+                        names.push(n.clone());
+                    }
+                }
+            }
+            let best = |get: &dyn Fn(&EventResult) -> Option<(f64, &'static str)>, name: &str| {
+                let mut out: Option<DesignValue> = None;
+                for e in here {
+                    if let Some((v, src)) = get(e)
+                        && out.as_ref().is_none_or(|b| v > b.value)
+                    {
+                        out = Some(DesignValue {
+                            name: name.to_string(),
+                            value: v,
+                            source: src,
+                            speed_m_per_s: e.speed_m_per_s,
+                            wave: e.wave.clone(),
+                        });
+                    }
+                }
+                out
+            };
+            StationResult {
+                station: f,
+                x_m: x,
+                design_pressure_pa: names
+                    .iter()
+                    .filter_map(|n| best(&|e: &EventResult| e.sensor_peak(n), n))
+                    .collect(),
+                section_force_peak_n_per_m: best(
+                    &|e: &EventResult| e.force_peak(),
+                    "section force",
+                ),
+                slamming_events: all.iter().filter(|e| e.slam_flag == SlamFlag::Slam).count(),
+                emerging_events: all
+                    .iter()
+                    .filter(|e| e.entry_velocity_m_per_s.is_some())
+                    .count(),
+            }
+        })
+        .collect()
+}
+
+fn num(v: Option<f64>) -> String {
+    v.map_or(String::new(), crate::report::csv_number)
+}
+
+/// The tidy table: one row per station x speed x wave x sensor (one row with no sensor for a station
+/// without sensors).
+pub fn pressures_csv(a: &Assessment, sensors_of: &dyn Fn(f64) -> Vec<String>) -> Result<String> {
+    let header: Vec<String> = [
+        "station",
+        "x_m",
+        "speed_m_per_s",
+        "wave",
+        "slam_flag",
+        "entry_velocity_m_per_s",
+        "sensor",
+        "sph_raw_peak_pa",
+        "sph_filtered_peak_pa",
+        "sph_peak_time_s",
+        "sph_impulse_pa_s",
+        "sph_convergence",
+        "analytic_peak_pa",
+        "analytic_peak_time_s",
+        "analytic_impulse_pa_s",
+        "sph_section_force_peak_n_per_m",
+        "analytic_section_force_peak_n_per_m",
+        "failed",
+    ]
+    .iter()
+    .map(|s| s.to_string())
+    .collect();
+    let mut rows = Vec::new();
+    for e in &a.events {
+        let flag = serde_json::to_value(e.slam_flag)
+            .ok()
+            .and_then(|v| v.as_str().map(str::to_string))
+            .unwrap_or_default();
+        let mut names = sensors_of(e.station);
+        if names.is_empty() {
+            names.push(String::new());
+        }
+        for n in names {
+            let s = e
+                .sph
+                .as_ref()
+                .and_then(|r| r.sensors.iter().find(|q| q.name == n));
+            let an = e
+                .analytic
+                .as_ref()
+                .and_then(|r| r.sensors.iter().find(|q| q.name == n));
+            rows.push(vec![
+                crate::report::csv_number(e.station),
+                crate::report::csv_number(e.x_m),
+                crate::report::csv_number(e.speed_m_per_s),
+                e.wave.clone(),
+                flag.clone(),
+                num(e.entry_velocity_m_per_s),
+                n.clone(),
+                num(s.map(|q| q.raw_peak_pa)),
+                num(s.and_then(|q| q.filtered_peak_pa)),
+                num(s.map(|q| q.peak_time_s)),
+                num(s.map(|q| q.impulse_pa_s)),
+                s.and_then(|q| q.convergence.clone()).unwrap_or_default(),
+                num(an.map(|q| q.peak_pa)),
+                num(an.map(|q| q.peak_time_s)),
+                num(an.map(|q| q.impulse_pa_s)),
+                num(e.sph.as_ref().map(|r| r.force_peak_n_per_m)),
+                num(e.analytic.as_ref().map(|r| r.force_peak_n_per_m)),
+                e.failed.clone().unwrap_or_default(),
+            ]);
+        }
+    }
+    crate::sph::output::csv_text(Some(&a.provenance), &header, &rows)
+}
+
+/// Write `summary.json` and `pressures.csv` into `dir` (atomically); returns the paths.
+pub fn write(
+    dir: &Path,
+    a: &Assessment,
+    sensors_of: &dyn Fn(f64) -> Vec<String>,
+) -> Result<Vec<PathBuf>> {
+    let v = serde_json::to_value(a).map_err(|e| Error::Invalid(format!("summary: {e}")))?;
+    let json = serde_json::to_string_pretty(&tidy_numbers(v))
+        .map_err(|e| Error::Invalid(format!("summary: {e}")))?;
+    let summary = dir.join("summary.json");
+    write_text_atomic(&summary, &(json + "\n"))?;
+    let csv = dir.join("pressures.csv");
+    write_text_atomic(&csv, &pressures_csv(a, sensors_of)?)?;
+    Ok(vec![summary, csv])
+}
+
+/// The tool name and version, as every summary gives it.
+pub fn tool() -> String {
+    TOOL.to_string()
+}

@@ -1,0 +1,282 @@
+//! `slamtool assess` end to end on the Ochi V-form (two stations, two speeds): the analytic fidelity, SPH
+//! at a very coarse resolution (10 particles across the half-breadth, no convergence companion) on 1 and 2
+//! threads, the cache (a rerun and a resumed run give a byte-identical summary.json), the limit gate's
+//! exit status and bad input.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use slamtool::assess::{self, Fidelity, Settings};
+use slamtool::hull::Hull;
+use slamtool::progress::ProgressHandle;
+use slamtool::sea::SeaState;
+use slamtool::sph::{Overrides, StudyPlan};
+
+fn data(rel: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join(rel)
+}
+
+fn inputs() -> (Hull, SeaState) {
+    (
+        Hull::from_file(&data("hulls/ochi-vform.toml")).unwrap(),
+        SeaState::from_file(&data("sea_states/ochi-1958.toml")).unwrap(),
+    )
+}
+
+fn settings(fidelity: Fidelity, threads: usize) -> Settings {
+    Settings {
+        stations: vec![0.093, 0.133],
+        speeds: Some(vec![2.0, 2.4]),
+        fidelity,
+        overrides: Overrides {
+            particles_per_half_beam: Some(10.0),
+            ..Default::default()
+        },
+        study: StudyPlan {
+            levels: 1,
+            ..StudyPlan::default()
+        },
+        threads: Some(threads),
+        ..Settings::default()
+    }
+}
+
+fn read(p: &Path) -> String {
+    std::fs::read_to_string(p).unwrap_or_else(|e| panic!("{}: {e}", p.display()))
+}
+
+fn slamtool(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_slamtool"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap()
+}
+
+#[test]
+fn analytic_assessment_gives_every_event_and_the_tidy_table() {
+    let (h, sea) = inputs();
+    let d = tempfile::tempdir().unwrap();
+    let (a, files) = assess::run(
+        &h,
+        &sea,
+        &settings(Fidelity::Analytic, 1),
+        d.path(),
+        &ProgressHandle::default(),
+    )
+    .unwrap();
+    assert_eq!(files.len(), 2);
+    assert_eq!(a.events.len(), 4, "2 stations x 2 speeds x 1 wave");
+    for e in &a.events {
+        assert!(e.entry_velocity_m_per_s.is_some(), "{e:?}");
+        assert!(e.sph.is_none() && e.failed.is_none());
+        let an = e.analytic.as_ref().expect("an analytic estimate");
+        assert_eq!(an.sensors.len(), 4);
+        assert!(an.sensors.iter().all(|s| s.peak_pa > 0.0), "{an:?}");
+    }
+    assert_eq!(a.stations.len(), 2);
+    assert!(a.stations.iter().all(|s| s.design_pressure_pa.len() == 4));
+    let csv = read(&d.path().join("pressures.csv"));
+    assert!(csv.starts_with("# slamtool"), "provenance first");
+    let rows: Vec<&str> = csv.lines().filter(|l| !l.starts_with('#')).collect();
+    assert!(rows[0].starts_with("station,x_m,speed_m_per_s,wave,"));
+    assert_eq!(
+        rows.len(),
+        1 + 16,
+        "one row per station x speed x wave x sensor"
+    );
+    let v: serde_json::Value = serde_json::from_str(&read(&d.path().join("summary.json"))).unwrap();
+    assert_eq!(v["fidelity"], "analytic");
+    assert!(v["provenance"]["inputs"].as_array().unwrap().len() >= 2);
+}
+
+#[test]
+fn sph_assessment_is_thread_independent_cached_and_resumable() {
+    let (h, sea) = inputs();
+    let d = tempfile::tempdir().unwrap();
+    let (one, two) = (d.path().join("one"), d.path().join("two"));
+    let quiet = ProgressHandle::default();
+    let (a, _) = assess::run(&h, &sea, &settings(Fidelity::Sph, 1), &one, &quiet).unwrap();
+    assert_eq!(a.failed_runs, 0);
+    for e in &a.events {
+        let r = e.sph.as_ref().expect("an SPH run");
+        assert!(r.force_peak_n_per_m > 0.0 && r.sensors.len() == 4);
+        let folder = one.join(e.run_folder.as_ref().unwrap());
+        assert!(folder.join("history.csv").is_file() && folder.join("summary.json").is_file());
+    }
+    let first = read(&one.join("summary.json"));
+    assess::run(&h, &sea, &settings(Fidelity::Sph, 2), &two, &quiet).unwrap();
+    assert_eq!(first, read(&two.join("summary.json")), "1 and 2 threads");
+    // A rerun reuses every run.
+    let t0 = std::time::Instant::now();
+    assess::run(&h, &sea, &settings(Fidelity::Sph, 2), &one, &quiet).unwrap();
+    assert_eq!(first, read(&one.join("summary.json")), "cached rerun");
+    println!("cached rerun: {:.2} s", t0.elapsed().as_secs_f64());
+    // A run killed mid-way leaves a temporary folder and no entry: the resumed assessment redoes that
+    // run only and gives the same summary.
+    let key = a.events[1].sph.as_ref().unwrap().key.clone();
+    let cache = one.join("cache");
+    std::fs::remove_dir_all(cache.join(&key)).unwrap();
+    std::fs::create_dir_all(cache.join(format!(".tmp-{key}-99999"))).unwrap();
+    std::fs::write(
+        cache.join(format!(".tmp-{key}-99999/history.csv")),
+        "partial",
+    )
+    .unwrap();
+    assess::run(&h, &sea, &settings(Fidelity::Sph, 2), &one, &quiet).unwrap();
+    assert_eq!(first, read(&one.join("summary.json")), "resumed");
+    let left: Vec<_> = std::fs::read_dir(&cache)
+        .unwrap()
+        .flatten()
+        .filter(|e| e.file_name().to_string_lossy().starts_with(".tmp"))
+        .collect();
+    assert!(left.is_empty(), "temporaries left: {left:?}");
+}
+
+#[test]
+fn screen_runs_sph_for_one_event_per_station() {
+    let (h, sea) = inputs();
+    let d = tempfile::tempdir().unwrap();
+    let (a, _) = assess::run(
+        &h,
+        &sea,
+        &settings(Fidelity::Screen, 2),
+        d.path(),
+        &ProgressHandle::default(),
+    )
+    .unwrap();
+    for f in [0.093, 0.133] {
+        let here: Vec<_> = a
+            .events
+            .iter()
+            .filter(|e| (e.station - f).abs() < 1e-9)
+            .collect();
+        assert_eq!(here.iter().filter(|e| e.sph.is_some()).count(), 1, "{f}");
+        let governing = here
+            .iter()
+            .max_by(|x, y| {
+                let r = |e: &&&assess::EventResult| e.analytic.as_ref().unwrap().ranking();
+                r(x).total_cmp(&r(y))
+            })
+            .unwrap();
+        assert!(
+            governing.sph.is_some(),
+            "{f}: SPH for the highest analytic pressure"
+        );
+    }
+    for st in &a.stations {
+        assert!(
+            st.design_pressure_pa.iter().all(|d| d.source == "sph"),
+            "design values where SPH ran come from SPH only: {st:?}"
+        );
+    }
+}
+
+#[test]
+fn the_limit_gate_exits_with_status_4() {
+    let d = tempfile::tempdir().unwrap();
+    let out = d.path().join("gate");
+    let args = [
+        "assess",
+        "hulls/ochi-vform.toml",
+        "--sea",
+        "sea_states/ochi-1958.toml",
+        "--station",
+        "0.093,0.133",
+        "--speeds",
+        "2.0,2.4",
+        "--fidelity",
+        "analytic",
+        "-q",
+        "-o",
+        out.to_str().unwrap(),
+    ];
+    let pass = slamtool(&[&args[..], &["--max-pressure-kpa", "100"]].concat());
+    assert_eq!(
+        pass.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&pass.stderr)
+    );
+    let fail = slamtool(&[&args[..], &["--max-pressure-kpa", "3"]].concat());
+    assert_eq!(fail.status.code(), Some(4));
+    let stdout = String::from_utf8_lossy(&fail.stdout);
+    let lines: Vec<&str> = stdout
+        .lines()
+        .filter(|l| l.starts_with("LIMIT EXCEEDED: station "))
+        .collect();
+    assert!(!lines.is_empty(), "{stdout}");
+    assert!(
+        lines.iter().all(|l| l.contains(" kPa > 3.00 kPa")),
+        "{lines:?}"
+    );
+}
+
+#[test]
+fn bad_input_is_a_clear_error_not_a_panic() {
+    let d = tempfile::tempdir().unwrap();
+    let out = d.path().join("bad");
+    let base = [
+        "assess",
+        "hulls/ochi-vform.toml",
+        "--sea",
+        "sea_states/ochi-1958.toml",
+        "--fidelity",
+        "analytic",
+        "-o",
+        out.to_str().unwrap(),
+    ];
+    let o = slamtool(&[&base[..], &["--station", "1.5"]].concat());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(err.contains("--station 1.5"), "{err}");
+    assert!(!err.contains("panicked"), "{err}");
+    let o = slamtool(&[
+        "assess",
+        "hulls/ochi-vform.toml",
+        "--sea",
+        "sea_states/ochi-1958.toml",
+        "--fidelity",
+        "exact",
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("exact") && err.contains("analytic"), "{err}");
+    // A sea state with no waves: the reader's file:line:column error.
+    let calm = d.path().join("calm.toml");
+    std::fs::write(&calm, "name = \"calm\"\nspeeds_m_s = [1.0]\n").unwrap();
+    let o = slamtool(&[
+        "assess",
+        "hulls/ochi-vform.toml",
+        "--sea",
+        calm.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(
+        err.contains("calm.toml:1:1") && err.contains("no waves"),
+        "{err}"
+    );
+    // A folder holding something else is refused unless --force.
+    std::fs::create_dir_all(d.path().join("other")).unwrap();
+    std::fs::write(d.path().join("other/notes.txt"), "mine").unwrap();
+    let other = d.path().join("other");
+    let o = slamtool(&[
+        "assess",
+        "hulls/ochi-vform.toml",
+        "--sea",
+        "sea_states/ochi-1958.toml",
+        "--fidelity",
+        "analytic",
+        "-o",
+        other.to_str().unwrap(),
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(
+        err.contains("notes.txt") && err.contains("--force"),
+        "{err}"
+    );
+}
