@@ -357,10 +357,11 @@ impl Simulation {
             a_max,
         );
         if dt < 1e-3 * self.dt_first {
+            let at = self.fastest_fluid_particle();
             return Err(format!(
-                "time step collapsed to {dt:.3e} s (first step {:.3e} s): largest fluid speed {v_max:.3} m/s, \
-                 largest acceleration {a_max:.3e} m/s^2",
-                self.dt_first
+                "time step collapsed to {dt:.3e} s (first step {:.3e} s): largest fluid speed {v_max:.3} m/s at \
+                 (y, z) = ({:.4}, {:.4}) m (keel at z = {:.4} m), largest acceleration {a_max:.3e} m/s^2",
+                self.dt_first, at[0], at[1], self.body.z_keel
             ));
         }
         self.dt = dt;
@@ -444,6 +445,20 @@ impl Simulation {
             }
         }
         Ok(())
+    }
+
+    /// Position of the fastest fluid particle (the first of equals, in storage order).
+    fn fastest_fluid_particle(&self) -> [f64; 2] {
+        let mut best = (f64::NEG_INFINITY, [0.0; 2]);
+        for i in 0..self.pt.len() {
+            if self.pt.kind[i] == Kind::Fluid {
+                let v2 = self.pt.vy[i] * self.pt.vy[i] + self.pt.vz[i] * self.pt.vz[i];
+                if v2 > best.0 {
+                    best = (v2, [self.pt.y[i], self.pt.z[i]]);
+                }
+            }
+        }
+        best.1
     }
 
     fn nan_diagnostic(&self) -> String {
