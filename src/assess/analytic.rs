@@ -18,9 +18,13 @@ pub const RHO: f64 = 1000.0;
 #[derive(Debug, Clone, Serialize, Deserialize, PartialEq)]
 pub struct SensorEstimate {
     pub name: String,
+    /// MLM peak outside the acoustic stage (Pa), time and impulse over the whole history.
     pub peak_pa: f64,
     pub peak_time_s: f64,
     pub impulse_pa_s: f64,
+    /// Largest water-hammer pressure rho c_w V of the acoustic stage (a flat keel at contact), when there
+    /// is one: an upper bound without air cushioning, not a slamming pressure, and kept out of `peak_pa`.
+    pub acoustic_bound_pa: Option<f64>,
 }
 
 /// The analytic estimate of one event.
@@ -60,18 +64,39 @@ fn samples(motion: &MotionSpec) -> Result<(Vec<f64>, Vec<f64>)> {
     }
 }
 
+/// Peak of (t, x) over the samples not flagged `acoustic`, with the impulse over the whole record.
+fn peak_outside(t: &[f64], x: &[f64], acoustic: &[bool]) -> crate::loads::peaks::Peak {
+    let mut p = peak(t, x);
+    let best = (0..t.len().min(x.len()))
+        .filter(|&k| !acoustic.get(k).copied().unwrap_or(false))
+        .max_by(|&a, &b| x[a].total_cmp(&x[b]));
+    match best {
+        Some(k) => {
+            p.value = x[k];
+            p.time = t[k];
+        }
+        None => {
+            p.value = 0.0;
+            p.time = 0.0;
+        }
+    }
+    p
+}
+
 /// Estimate an event's force and sensor pressures.
 pub fn estimate(case: &EntryCase) -> Result<Estimate> {
     let (t, v) = samples(&case.motion)?;
     let w = generalised_wagner::estimate(&case.half_points, &t, &v, RHO)?;
-    let f = peak(&w.t, &w.force);
+    // Peaks of the models' own values: samples at the acoustic limit are the water-hammer bound.
+    let f = peak_outside(&w.t, &w.force, &w.acoustic_limited);
     let mut notes = w.notes.clone();
     if let Some(why) = &w.stopped {
         notes.push(format!("Wagner estimate stops early: {why}"));
     }
     let mlm = Mlm::new(&case.half_points, &t, &v, RHO)?;
     let times = mlm.times();
-    if mlm.acoustic().iter().any(|&a| a) {
+    let acoustic = mlm.acoustic();
+    if acoustic.iter().any(|&a| a) {
         notes.push(
             "flat keel: the first samples are in the acoustic stage, where the MLM gives the water-hammer \
              pressure rho c_w V (an upper bound without air cushioning, not a slamming pressure)"
@@ -84,12 +109,20 @@ pub fn estimate(case: &EntryCase) -> Result<Estimate> {
         .map(|s| {
             let s1 = (s.s_m - 0.5 * s.width_m).max(0.0);
             let s2 = s.s_m + 0.5 * s.width_m;
-            let p = peak(&times, &mlm.sensor_history(s1, s2));
+            let history = mlm.sensor_history(s1, s2);
+            let p = peak_outside(&times, &history, &acoustic);
+            let bound = history
+                .iter()
+                .zip(&acoustic)
+                .filter(|(_, a)| **a)
+                .map(|(p, _)| *p)
+                .reduce(f64::max);
             SensorEstimate {
                 name: s.name.clone(),
                 peak_pa: p.value,
                 peak_time_s: p.time,
                 impulse_pa_s: p.impulse,
+                acoustic_bound_pa: bound,
             }
         })
         .collect();

@@ -34,7 +34,7 @@ pub(crate) fn read_stations(
 }
 
 /// Column (1-based) where field `field` starts on a CSV line (plain comma-separated fields).
-pub(crate) fn column_of(line: &str, field: usize) -> usize {
+fn column_of(line: &str, field: usize) -> usize {
     let line = line.trim_start_matches('\u{feff}');
     let mut col = 1;
     for (i, part) in line.split(',').enumerate() {
@@ -47,22 +47,26 @@ pub(crate) fn column_of(line: &str, field: usize) -> usize {
     line.trim_end().chars().count() + 1
 }
 
+/// An error at field `field` (0-based) of line `line` (1-based) of a CSV source, located to the column.
+pub(crate) fn cell_error(src: &SourceText, line: usize, field: usize, msg: String) -> InputError {
+    let text = src.text.lines().nth(line.saturating_sub(1)).unwrap_or("");
+    src.error_line(line, column_of(text, field), msg)
+}
+
+/// The line of a CSV record from its byte offset: with CRLF line ends the reader counts lines one short
+/// and starts a record on the '\n' that ends the line before, so skip line-end bytes first.
+pub(crate) fn record_line(src: &SourceText, p: &csv::Position) -> usize {
+    let bytes = src.text.as_bytes();
+    let mut b = p.byte() as usize;
+    while matches!(bytes.get(b), Some(b'\r' | b'\n')) {
+        b += 1;
+    }
+    src.line_column(b).0
+}
+
 fn parse(src: &SourceText, lpp: f64, column: StationColumn) -> Result<Vec<Station>> {
-    let lines: Vec<&str> = src.text.lines().collect();
-    let err = |line: usize, field: usize, msg: String| -> InputError {
-        let text = lines.get(line.saturating_sub(1)).copied().unwrap_or("");
-        src.error_line(line, column_of(text, field), msg)
-    };
-    // The line of a record from its byte offset: with CRLF line ends the reader counts lines one short
-    // and starts a record on the '\n' that ends the line before, so skip line-end bytes first.
-    let line_of = |p: &csv::Position| {
-        let bytes = src.text.as_bytes();
-        let mut b = p.byte() as usize;
-        while matches!(bytes.get(b), Some(b'\r' | b'\n')) {
-            b += 1;
-        }
-        src.line_column(b).0
-    };
+    let err = |line: usize, field: usize, msg: String| cell_error(src, line, field, msg);
+    let line_of = |p: &csv::Position| record_line(src, p);
     let mut reader = csv::ReaderBuilder::new()
         .has_headers(true)
         .flexible(true)

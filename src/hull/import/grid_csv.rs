@@ -14,8 +14,8 @@
 //! lowest offset (a flat bottom there if that offset has breadth) up through the offsets in z order.
 
 use super::SourceStation;
-use crate::error::{InputError, Result};
-use crate::hull::offsets_csv::column_of;
+use crate::error::Result;
+use crate::hull::offsets_csv::{cell_error, record_line};
 use crate::hull::schema::StationColumn;
 use crate::hull::validate::check_section;
 use crate::input::SourceText;
@@ -43,20 +43,8 @@ fn cell(text: &str) -> Result<Option<f64>, String> {
 
 /// Parse a grid offsets table. Every error names the line and column of the cell at fault.
 pub(crate) fn parse(src: &SourceText) -> Result<GridTable> {
-    let lines: Vec<&str> = src.text.lines().collect();
-    let err = |line: usize, field: usize, msg: String| -> InputError {
-        let text = lines.get(line.saturating_sub(1)).copied().unwrap_or("");
-        src.error_line(line, column_of(text, field), msg)
-    };
-    // Line of a record from its byte offset (skipping line ends, for CRLF files).
-    let line_of = |p: &csv::Position| {
-        let bytes = src.text.as_bytes();
-        let mut b = p.byte() as usize;
-        while matches!(bytes.get(b), Some(b'\r' | b'\n')) {
-            b += 1;
-        }
-        src.line_column(b).0
-    };
+    let err = |line: usize, field: usize, msg: String| cell_error(src, line, field, msg);
+    let line_of = |p: &csv::Position| record_line(src, p);
     let mut reader = csv::ReaderBuilder::new()
         .has_headers(false)
         .flexible(true)
@@ -210,7 +198,7 @@ pub(crate) fn parse(src: &SourceText) -> Result<GridTable> {
     }
     if stations.len() < 2 {
         return Err(err(
-            lines.len().max(1),
+            src.text.lines().count().max(1),
             0,
             "a hull needs at least two stations (rows after the header)".into(),
         )
