@@ -46,6 +46,28 @@ pub struct WagnerEstimate {
     pub notes: Vec<String>,
 }
 
+impl WagnerEstimate {
+    /// Indices of the samples that carry Wagner's own values (not the acoustic limit).
+    fn wagner_samples(&self) -> impl Iterator<Item = usize> + '_ {
+        (0..self.t.len()).filter(|&k| !self.acoustic_limited.get(k).copied().unwrap_or(false))
+    }
+
+    /// Wagner's peak force (N/m) and its time, leaving out the samples at the acoustic limit (a flat
+    /// keel at contact: the water-hammer bound, reported in `notes`); the last of equal peaks.
+    pub fn force_peak(&self) -> Option<(f64, f64)> {
+        self.wagner_samples()
+            .max_by(|&a, &b| self.force[a].total_cmp(&self.force[b]))
+            .map(|k| (self.force[k], self.t[k]))
+    }
+
+    /// Wagner's largest jet-root pressure (Pa), leaving out the samples at the acoustic limit.
+    pub fn pressure_peak(&self) -> Option<f64> {
+        self.wagner_samples()
+            .map(|k| self.peak_pressure[k])
+            .reduce(f64::max)
+    }
+}
+
 /// Penetration depth at which the wetted half-width is c (the Wagner condition), or `None` past the chine
 /// or widest point, or for a section the model cannot take (see [`Profile::from_half_points`]).
 pub fn penetration_for_half_width(half: &[[f64; 2]], c: f64) -> Option<f64> {

@@ -88,7 +88,7 @@ pub fn estimate(case: &EntryCase) -> Result<Estimate> {
     let (t, v) = samples(&case.motion)?;
     let w = generalised_wagner::estimate(&case.half_points, &t, &v, RHO)?;
     // Peaks of the models' own values: samples at the acoustic limit are the water-hammer bound.
-    let f = peak_outside(&w.t, &w.force, &w.acoustic_limited);
+    let (force_peak, force_time) = w.force_peak().unwrap_or((0.0, 0.0));
     let mut notes = w.notes.clone();
     if let Some(why) = &w.stopped {
         notes.push(format!("Wagner estimate stops early: {why}"));
@@ -127,8 +127,8 @@ pub fn estimate(case: &EntryCase) -> Result<Estimate> {
         })
         .collect();
     Ok(Estimate {
-        force_peak_n_per_m: f.value,
-        force_peak_time_s: f.time,
+        force_peak_n_per_m: force_peak,
+        force_peak_time_s: force_time,
         sensors,
         notes,
     })

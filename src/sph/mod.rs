@@ -295,20 +295,12 @@ fn summarise_run(sim: &Simulation, wall_s: f64, stopped: Option<String>) -> Resu
     if let Some(sec) = sim.section() {
         match generalised_wagner::estimate(sec.half_points(), &h.t, &h.v_down, s.rho0) {
             Ok(e) => {
-                // Wagner's own values only: samples at the acoustic limit (a flat keel at contact) are
-                // the water-hammer bound, reported in the warnings, not Wagner peaks.
-                let wagner = |k: &usize| !e.acoustic_limited.get(*k).copied().unwrap_or(false);
-                if let Some(k) = (0..e.t.len())
-                    .filter(wagner)
-                    .max_by(|&a, &b| e.force[a].total_cmp(&e.force[b]))
-                {
-                    wf = Some(e.force[k]);
-                    wft = Some(e.t[k]);
+                // Wagner's own values only: the acoustic-limit samples are in the warnings below.
+                if let Some((f, t)) = e.force_peak() {
+                    wf = Some(f);
+                    wft = Some(t);
                 }
-                wp = (0..e.t.len())
-                    .filter(wagner)
-                    .map(|k| e.peak_pressure[k])
-                    .reduce(f64::max);
+                wp = e.pressure_peak();
                 if e.acoustic_limited.iter().any(|&a| a) {
                     warnings.extend(e.notes.iter().map(|n| format!("Wagner estimate: {n}")));
                 }
