@@ -309,11 +309,13 @@ pub fn run(
         irregular,
         bow_force_definition: super::bow_force::DEFINITION,
         bow_force,
+        validation: Default::default(),
         failed_runs,
         limits: s.limits.clone(),
         limit_violations: Vec::new(),
         warnings: plan.warnings.clone(),
     };
+    a.validation = super::comparisons::validate(hull, &plan, &a)?;
     a.limit_violations = super::limits::check(&a, &s.limits);
     let unchecked = super::limits::unchecked(&a, &s.limits);
     a.warnings.extend(unchecked);

@@ -18,10 +18,12 @@
 pub mod analytic;
 pub mod bow_force;
 pub mod cache;
+pub mod comparisons;
 pub mod execute;
 pub mod limits;
 pub mod plan;
 pub mod results;
+pub mod trends;
 
 pub use execute::run;
 pub use plan::{Event, Fidelity, Plan, Settings};

@@ -96,6 +96,10 @@ pub struct Event {
     /// Instant of keel entry within the encounter period (s; 0: wave crest at midship), and the period.
     pub entry_time_s: Option<f64>,
     pub encounter_period_s: f64,
+    /// The regular wave: frequency (rad/s) and amplitude (m); the station's local draft (m).
+    pub wave_omega_rad_s: f64,
+    pub wave_amplitude_m: f64,
+    pub draft_m: f64,
     /// What runs: the section, the prescribed entry motion and the sensors (None: the keel does not
     /// emerge, nothing runs).
     pub entry: Option<EntryCase>,
@@ -150,6 +154,8 @@ pub struct Plan {
     pub speeds: Vec<f64>,
     /// The strip-theory report (relative motion, keel entry, irregular-sea statistics).
     pub motions: Report,
+    /// The ship model the motions come from (for responses the report does not keep).
+    pub model: ShipModel,
     /// The sensors of each station (same order as `stations`), from the hull file or the defaults.
     pub sensors: Vec<StationSensors>,
     /// In the order speed, wave, station.
@@ -246,6 +252,9 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
                     entry_velocity_m_s: st.keel_entry.as_ref().map(|k| k.entry_velocity),
                     entry_time_s: st.keel_entry.as_ref().map(|k| k.t_entry),
                     encounter_period_s: 2.0 * std::f64::consts::PI / w.omega_e,
+                    wave_omega_rad_s: w.omega0,
+                    wave_amplitude_m: 0.5 * w.height_m,
+                    draft_m: st.draft,
                     entry,
                 });
             }
@@ -272,6 +281,7 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
         stations: at,
         speeds,
         motions,
+        model,
         sensors,
         events,
         warnings,

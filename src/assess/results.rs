@@ -149,6 +149,11 @@ pub struct Assessment {
     /// Total bow slamming force and point of action per speed and regular wave ([`super::bow_force`]).
     pub bow_force_definition: &'static str,
     pub bow_force: Vec<super::bow_force::BowForce>,
+    /// Published numbers and trends beside the results, for hulls that have them
+    /// (`data/reference/validation.toml`): top-level `reference_case`, `comparisons`, `trend_checks`,
+    /// `validation_notes`.
+    #[serde(flatten)]
+    pub validation: super::comparisons::Validation,
     pub failed_runs: usize,
     /// The design pressure limits checked and the violations, one line each.
     pub limits: Vec<super::limits::Limit>,

@@ -8,6 +8,7 @@
 //! ([`crate::seakeeping::relative_motion`]); the downward entry velocity is V = -Ds/Dt.
 
 pub mod default_sensors;
+pub mod flare;
 
 use crate::error::{Error, Result};
 use crate::hull::{Hull, LoadingCondition};

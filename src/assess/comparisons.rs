@@ -1,0 +1,286 @@
+//! Published numbers and trends beside an assessment's results, for the hulls that have them. Which hull
+//! has which comparisons is declared in `data/reference/validation.toml` (matched by the hull's name); the
+//! numbers are read from the reference files it names (compiled in), never adjusted. Each comparison
+//! states what is computed, what the reference is, and where the two differ in definition.
+//!
+//! * Hermundstad & Moan (2005) car carrier, as reported by Veen (2010) s. 6.2 (this module).
+//! * Ochi (1958) V-form, trends and Veen's (2010) s. 6.3 numbers ([`super::trends`]).
+
+use serde::{Deserialize, Serialize};
+
+use super::plan::Plan;
+use super::results::{Assessment, EventResult};
+use crate::error::{Error, Result};
+use crate::hull::Hull;
+use crate::impact::flare;
+use crate::seakeeping::relative_motion::{self, RelativeMotion};
+use crate::seakeeping::strip_theory::{self, StripSettings};
+
+/// One computed number beside a published one.
+#[derive(Debug, Clone, Serialize)]
+pub struct Comparison {
+    pub quantity: String,
+    /// None where the assessment cannot compute it (the note says why).
+    pub computed: Option<f64>,
+    pub reference: f64,
+    pub unit: &'static str,
+    pub source: String,
+    pub note: String,
+}
+
+/// One published qualitative finding and whether the assessment reproduces it.
+#[derive(Debug, Clone, Serialize)]
+pub struct TrendCheck {
+    pub check: String,
+    /// "reproduced", "not reproduced" or "not assessed".
+    pub verdict: &'static str,
+    /// The numbers the verdict rests on.
+    pub detail: String,
+    pub source: String,
+}
+
+/// The comparisons and trend checks of an assessment (empty for a hull without reference data).
+#[derive(Debug, Clone, Default, Serialize)]
+pub struct Validation {
+    /// The reference case matched (`data/reference/validation.toml`), if any.
+    pub reference_case: Option<String>,
+    pub comparisons: Vec<Comparison>,
+    pub trend_checks: Vec<TrendCheck>,
+    #[serde(rename = "validation_notes")]
+    pub notes: Vec<String>,
+}
+
+#[derive(Deserialize)]
+struct Index {
+    case: Vec<Case>,
+}
+
+#[derive(Deserialize)]
+struct Case {
+    hull_name: String,
+    kind: String,
+    reference: String,
+}
+
+const INDEX: &str = include_str!("../../data/reference/validation.toml");
+const HERMUNDSTAD: &str = include_str!("../../data/reference/hermundstad2005_panel.toml");
+pub(crate) const OCHI: &str = include_str!("../../data/reference/ochi1958_vform.toml");
+
+/// A number at `path` (table.key) of a compiled-in reference file.
+pub(crate) fn reference_number(text: &str, table: &str, key: &str) -> Result<f64> {
+    let v: toml::Value =
+        toml::from_str(text).map_err(|e| Error::Invalid(format!("reference data: {e}")))?;
+    v.get(table)
+        .and_then(|t| t.get(key))
+        .and_then(|x| x.as_float().or_else(|| x.as_integer().map(|i| i as f64)))
+        .ok_or_else(|| Error::Invalid(format!("reference data: no number {table}.{key}")))
+}
+
+/// The comparisons for `hull`'s assessment `a` (planned as `plan`).
+pub fn validate(hull: &Hull, plan: &Plan, a: &Assessment) -> Result<Validation> {
+    let index: Index = toml::from_str(INDEX)
+        .map_err(|e| Error::Invalid(format!("data/reference/validation.toml: {e}")))?;
+    let Some(case) = index.case.iter().find(|c| c.hull_name == hull.name) else {
+        return Ok(Validation::default());
+    };
+    let mut v = match case.kind.as_str() {
+        "hermundstad2005" => hermundstad(hull, plan, a)?,
+        "ochi1958" => super::trends::ochi(a)?,
+        other => {
+            return Err(Error::Invalid(format!(
+                "data/reference/validation.toml: unknown kind '{other}'"
+            )));
+        }
+    };
+    v.reference_case = Some(format!("{} ({})", case.kind, case.reference));
+    Ok(v)
+}
+
+/// The largest sensor peak of `name` over `events` (SPH where run, else analytic), with its source.
+pub(crate) fn sensor_peak(events: &[&EventResult], name: &str) -> Option<(f64, &'static str)> {
+    events
+        .iter()
+        .filter_map(|e| e.sensor_peak(name))
+        .max_by(|a, b| a.0.total_cmp(&b.0))
+}
+
+/// The relative motion of a planned event's station in its wave.
+fn relative_motion_of(plan: &Plan, k: usize) -> Result<(RelativeMotion, f64)> {
+    let e = &plan.events[k];
+    let r = strip_theory::respond(
+        &plan.model,
+        e.wave_omega_rad_s,
+        e.speed_m_s,
+        &StripSettings::default(),
+    )?;
+    Ok((relative_motion::at_station(&r, e.x, 1.0)?, r.omega_e))
+}
+
+const HM_SOURCE: &str = "Hermundstad & Moan (2005), as reported by Veen (2010) s. 6.2 \
+(data/reference/hermundstad2005_panel.toml)";
+
+/// Hermundstad & Moan (2005): the flare panel at 0.05 Lpp and the relative velocity at flare impact.
+fn hermundstad(hull: &Hull, plan: &Plan, a: &Assessment) -> Result<Validation> {
+    let num = |t: &str, k: &str| reference_number(HERMUNDSTAD, t, k);
+    let f = num("model", "section_aft_of_fp_fraction")?;
+    let width = num("model", "panel_width_m")?;
+    let x = hull.station_x(f);
+    let mut out = Validation::default();
+    // The panel: the hull's sensor on that station whose width is the published panel width.
+    let panel = hull
+        .sensors
+        .iter()
+        .filter(|s| (s.x - x).abs() < 1e-6)
+        .min_by(|p, q| {
+            (p.diameter - width)
+                .abs()
+                .total_cmp(&(q.diameter - width).abs())
+        });
+    let Some(panel) = panel else {
+        out.notes.push(format!(
+            "the hull file has no sensor on the station at {f} Lpp: no flare-panel comparison"
+        ));
+        return Ok(out);
+    };
+    let here: Vec<usize> = (0..plan.events.len())
+        .filter(|&k| (plan.events[k].station - f).abs() < 1e-6)
+        .collect();
+    if here.is_empty() {
+        out.notes.push(format!(
+            "the station at {f} Lpp is not assessed (give --station {f}): no flare-panel comparison"
+        ));
+        return Ok(out);
+    }
+    let events: Vec<&EventResult> = here.iter().map(|&k| &a.events[k]).collect();
+    let peak = sensor_peak(&events, &panel.name);
+    let why_none = "no water-entry event at this station: its keel stays in the water in this wave (the \
+                    assessment's events start at keel entry), so the panel pressure is not computed";
+    let pressure_note = |what: &str| match peak {
+        Some((_, src)) => format!(
+            "computed: peak of sensor {} ({src}) over the events at {f} Lpp; reference: {what}",
+            panel.name
+        ),
+        None => format!("{why_none}; reference: {what}"),
+    };
+    let kpa = |p: Option<(f64, &str)>| p.map(|(v, _)| v / 1e3);
+    for (key, table, what) in [
+        (
+            "panel_peak_pressure_kpa",
+            "measured",
+            "measured on the 0.067 m bow-flare panel in the basin",
+        ),
+        (
+            "sph_peak_pressure_kpa",
+            "reported_comparisons",
+            "Veen's 2D SPH with the measured relative velocity imposed (100 Hz low-pass)",
+        ),
+        (
+            "wagner_peak_pressure_kpa",
+            "reported_comparisons",
+            "Wagner's wedge peak for the flare as a 37 deg wedge struck at 1.4 m/s (Veen)",
+        ),
+    ] {
+        out.comparisons.push(Comparison {
+            quantity: format!("peak pressure on flare panel {} at {f} Lpp", panel.name),
+            computed: kpa(peak),
+            reference: num(table, key)?,
+            unit: "kPa",
+            source: HM_SOURCE.into(),
+            note: pressure_note(what),
+        });
+    }
+    // Flare impact: the undisturbed water surface reaches the panel's lower edge.
+    let sec = hull.section_at(x)?;
+    let lower = sec.point_at_girth((panel.girth - 0.5 * panel.diameter).max(0.0));
+    let upper = sec.point_at_girth(panel.girth + 0.5 * panel.diameter);
+    let h = lower[1] - sec.keel_z();
+    let beta = (upper[1] - lower[1]).atan2(upper[0] - lower[0]);
+    let k0 = here[0];
+    let e = &plan.events[k0];
+    let (rm, omega_e) = relative_motion_of(plan, k0)?;
+    let hit = flare::water_reaches(&rm, omega_e, e.wave_amplitude_m, e.draft_m, h);
+    let keel = flare::water_reaches(&rm, omega_e, e.wave_amplitude_m, e.draft_m, 0.0);
+    let at = format!(
+        "{} m/s, wave {}: the undisturbed water surface (no pile-up) reaching the panel's lower edge, \
+         {h:.4} m above the keel, from strip theory",
+        e.speed_m_s, e.wave
+    );
+    let v_note = match hit {
+        Some(_) => format!("computed at {at}"),
+        None => format!(
+            "the water does not reach the panel's lower edge in this wave at {at} (relative motion \
+             amplitude {:.4} m, draft {:.4} m)",
+            rm.motion.norm() * e.wave_amplitude_m,
+            e.draft_m
+        ),
+    };
+    out.comparisons.push(Comparison {
+        quantity: format!("relative velocity at flare impact, {f} Lpp"),
+        computed: hit.map(|c| c.velocity_m_per_s),
+        reference: num("reported_comparisons", "flare_impact_speed_m_s")?,
+        unit: "m/s",
+        source: HM_SOURCE.into(),
+        note: v_note + "; reference: from the measured relative velocity (Veen)",
+    });
+    let delay = match (hit, keel) {
+        (Some(h), Some(k)) => {
+            Some((h.time_s - k.time_s).rem_euclid(2.0 * std::f64::consts::PI / omega_e))
+        }
+        _ => None,
+    };
+    out.comparisons.push(Comparison {
+        quantity: format!("delay of flare impact after keel entry, {f} Lpp"),
+        computed: delay,
+        reference: num("reported_comparisons", "flare_impact_delay_after_keel_s")?,
+        unit: "s",
+        source: HM_SOURCE.into(),
+        note: if keel.is_none() {
+            "the keel does not emerge at this station in this wave, so there is no keel entry to count \
+             from; reference: in Veen's 2D run the section was driven from keel contact with the measured \
+             relative velocity"
+                .into()
+        } else {
+            "computed: flare impact (as above) minus keel entry, from strip theory".into()
+        },
+    });
+    // Wagner's wedge peak, rho V^2 / 2 (pi^2/4) cot^2(beta), at the panel's own chord angle.
+    let rho = plan_rho(hull, plan);
+    let cp = crate::analytic::wagner::peak_pressure_coefficient(beta)?;
+    let wagner_at = |v: f64| 0.5 * rho * v * v * cp / 1e3;
+    let v_ref = num("reported_comparisons", "flare_impact_speed_m_s")?;
+    out.comparisons.push(Comparison {
+        quantity: format!(
+            "Wagner wedge peak pressure at the panel's chord angle {:.1} deg and the reference 1.4 m/s",
+            beta.to_degrees()
+        ),
+        computed: Some(wagner_at(v_ref)),
+        reference: num("reported_comparisons", "wagner_peak_pressure_kpa")?,
+        unit: "kPa",
+        source: HM_SOURCE.into(),
+        note: "a check of the formula and of the reconstructed flare angle: the same equation as Veen's \
+               (his eq. 2.1 with a 37 deg wedge), not a check of the assessment"
+            .into(),
+    });
+    out.comparisons.push(Comparison {
+        quantity: format!(
+            "Wagner wedge peak pressure at the panel's chord angle {:.1} deg and the computed flare impact velocity",
+            beta.to_degrees()
+        ),
+        computed: hit.map(|c| wagner_at(c.velocity_m_per_s.max(0.0))),
+        reference: num("reported_comparisons", "wagner_peak_pressure_kpa")?,
+        unit: "kPa",
+        source: HM_SOURCE.into(),
+        note: "the difference follows the relative velocity (above)".into(),
+    });
+    out.notes.push(
+        "the car-carrier hull is a reconstruction (its lines were not published) and strip theory is \
+         linear without the bow wave's swell-up: differences in the relative velocity come from both"
+            .into(),
+    );
+    Ok(out)
+}
+
+/// Water density of the assessed loading (kg/m3).
+fn plan_rho(hull: &Hull, plan: &Plan) -> f64 {
+    hull.loading(Some(&plan.loading)).map_or(1000.0, |l| l.rho)
+}
