@@ -58,6 +58,7 @@ struct Index {
 #[derive(Deserialize)]
 struct Case {
     hull_name: String,
+    sea_name: String,
     kind: String,
     reference: String,
 }
@@ -77,12 +78,23 @@ pub(crate) fn reference_number(text: &str, table: &str, key: &str) -> Result<f64
 }
 
 /// The comparisons for `hull`'s assessment `a` (planned as `plan`).
-pub fn validate(hull: &Hull, plan: &Plan, a: &Assessment) -> Result<Validation> {
+pub fn validate(hull: &Hull, sea_name: &str, plan: &Plan, a: &Assessment) -> Result<Validation> {
     let index: Index = toml::from_str(INDEX)
         .map_err(|e| Error::Invalid(format!("data/reference/validation.toml: {e}")))?;
     let Some(case) = index.case.iter().find(|c| c.hull_name == hull.name) else {
         return Ok(Validation::default());
     };
+    if case.sea_name != sea_name {
+        return Ok(Validation {
+            reference_case: Some(format!("{} ({})", case.kind, case.reference)),
+            notes: vec![format!(
+                "the published results for this hull belong to the sea state '{}'; this assessment is in \
+                 '{sea_name}', so they are not compared",
+                case.sea_name
+            )],
+            ..Validation::default()
+        });
+    }
     let mut v = match case.kind.as_str() {
         "hermundstad2005" => hermundstad(hull, plan, a)?,
         "ochi1958" => super::trends::ochi(a)?,

@@ -215,6 +215,7 @@ pub fn run(
             wave: e.wave.clone(),
             slam_flag: e.flag,
             entry_velocity_m_per_s: e.entry_velocity_m_s,
+            design_event: e.design.clone(),
             analytic: estimates[i].clone(),
             run_folder: sph.as_ref().map(|r| format!("cache/{}", r.key)),
             sph,
@@ -291,7 +292,8 @@ pub fn run(
                     "extreme_entry_velocity_m_per_s": ir.extreme_velocity_m_s,
                     "extreme_definition": "most probable largest entry velocity in the expected number of \
                                            slams over duration_h",
-                    "design_events": "not run",
+                    "design_events": "events[] with wave = \"<sea>/design\" and a design_event record (its \
+                                      definition), one per station with at least one slam expected",
                 })
             })
         })
@@ -315,7 +317,7 @@ pub fn run(
         limit_violations: Vec::new(),
         warnings: plan.warnings.clone(),
     };
-    a.validation = super::comparisons::validate(hull, &plan, &a)?;
+    a.validation = super::comparisons::validate(hull, &sea.name, &plan, &a)?;
     a.limit_violations = super::limits::check(&a, &s.limits);
     let unchecked = super::limits::unchecked(&a, &s.limits);
     a.warnings.extend(unchecked);

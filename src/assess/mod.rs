@@ -7,8 +7,8 @@
 //!   carry sensors; each station whose keel emerges gives one water-entry event (its section, driven by
 //!   the entry-velocity history after keel entry, with the station's sensors). Where the keel stays in the
 //!   water the station is recorded as "no slam", with the flag `slamtool motions` prints (Ochi 1964).
-//!   Irregular seas are reported as slam statistics only (probability, slams per hour, most probable
-//!   largest entry velocity); design events for them are not run.
+//!   Irregular seas give Ochi's slam statistics and one design event per slamming station and speed
+//!   ([`design_event`]).
 //! * [`analytic`]: generalised Wagner force and modified Logvinovich sensor pressures for an event.
 //! * [`execute`]: the SPH runs (with a convergence companion), in parallel, through the [`cache`].
 //! * [`results`]: per event, per station (design pressure per sensor: the maximum over events) and the
@@ -19,6 +19,7 @@ pub mod analytic;
 pub mod bow_force;
 pub mod cache;
 pub mod comparisons;
+pub mod design_event;
 pub mod execute;
 pub mod limits;
 pub mod plan;

@@ -59,6 +59,8 @@ pub struct Settings {
     /// Design pressure limits (`--max-pressure-kpa`, the hull file's `[limits]`); violations are listed in
     /// the results.
     pub limits: Vec<super::limits::Limit>,
+    /// How the design events of irregular seas are chosen.
+    pub design_basis: super::design_event::Basis,
     /// Warnings from reading the settings (e.g. a station outside the perpendiculars), kept in the results.
     pub warnings: Vec<String>,
 }
@@ -76,6 +78,7 @@ impl Default for Settings {
             use_cache: true,
             threads: None,
             limits: Vec::new(),
+            design_basis: super::design_event::Basis::MostProbableLargest,
             warnings: Vec::new(),
         }
     }
@@ -100,6 +103,8 @@ pub struct Event {
     pub wave_omega_rad_s: f64,
     pub wave_amplitude_m: f64,
     pub draft_m: f64,
+    /// For an irregular sea's design event: its definition (None for a regular wave).
+    pub design: Option<super::design_event::DesignEvent>,
     /// What runs: the section, the prescribed entry motion and the sensors (None: the keel does not
     /// emerge, nothing runs).
     pub entry: Option<EntryCase>,
@@ -224,7 +229,7 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
             )));
         }
     }
-    let req = Request::for_sea(sea, speeds.clone(), stations);
+    let req = Request::for_sea(sea, speeds.clone(), stations.clone());
     let motions = analysis::run(&model, &req)?;
     let mut events = Vec::new();
     for sp in &motions.speeds {
@@ -255,16 +260,27 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
                     wave_omega_rad_s: w.omega0,
                     wave_amplitude_m: 0.5 * w.height_m,
                     draft_m: st.draft,
+                    design: None,
                     entry,
                 });
             }
         }
     }
+    let (design, skipped) = super::design_event::plan_events(
+        &super::design_event::PlanInputs {
+            hull,
+            sea,
+            model: &model,
+            motions: &motions,
+            stations: &stations,
+            sensors: &sensors,
+        },
+        s.design_basis,
+    )?;
+    events.extend(design);
     let mut warnings = s.warnings.clone();
     warnings.extend(motions.warnings.iter().cloned());
-    if !sea.irregular.is_empty() {
-        warnings.push(IRREGULAR_NOTE.to_string());
-    }
+    warnings.extend(skipped);
     for q in sensors.iter().filter(|q| q.default) {
         warnings.push(format!(
             "station {} Lpp carries no sensors in the hull file: {} default panels {}..{} are used, one every \
@@ -287,8 +303,3 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
         warnings,
     })
 }
-
-/// What an assessment says about irregular seas.
-pub const IRREGULAR_NOTE: &str = "irregular seas are reported as slam statistics only (probability per \
-encounter, slams per hour, most probable largest entry velocity over the exposure): design events for \
-irregular seas are not run yet";

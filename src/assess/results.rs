@@ -53,6 +53,8 @@ pub struct EventResult {
     pub slam_flag: SlamFlag,
     /// Velocity at keel entry (m/s), when the keel emerges.
     pub entry_velocity_m_per_s: Option<f64>,
+    /// For an irregular sea's design event (wave "<sea>/design"): how it is defined, with N or alpha.
+    pub design_event: Option<super::design_event::DesignEvent>,
     /// Generalised Wagner force and MLM sensor pressures (when the keel emerges).
     pub analytic: Option<Estimate>,
     /// The SPH run, when one was made and finished.
@@ -254,6 +256,7 @@ pub fn pressures_csv(a: &Assessment, sensors_of: &dyn Fn(f64) -> Vec<String>) ->
         "sph_section_force_peak_n_per_m",
         "analytic_section_force_peak_n_per_m",
         "failed",
+        "design_event_definition",
     ]
     .iter()
     .map(|s| s.to_string())
@@ -296,6 +299,9 @@ pub fn pressures_csv(a: &Assessment, sensors_of: &dyn Fn(f64) -> Vec<String>) ->
                 num(e.sph.as_ref().map(|r| r.force_peak_n_per_m)),
                 num(e.analytic.as_ref().map(|r| r.force_peak_n_per_m)),
                 e.failed.clone().unwrap_or_default(),
+                e.design_event
+                    .as_ref()
+                    .map_or(String::new(), |d| d.definition.clone()),
             ]);
         }
     }

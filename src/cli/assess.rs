@@ -4,7 +4,7 @@
 use std::path::{Path, PathBuf};
 
 use clap::Args;
-use slamtool::assess::{self, Assessment, Fidelity, Settings};
+use slamtool::assess::{self, Fidelity, Settings};
 use slamtool::hull::Hull;
 use slamtool::sea::SeaState;
 use slamtool::sph::{Level, Overrides, StudyPlan};
@@ -73,6 +73,10 @@ pub struct AssessArgs {
     /// Parallel SPH runs [default: one per core].
     #[arg(short = 'j', long, value_name = "N")]
     threads: Option<usize>,
+    /// Design events of irregular seas at risk level alpha: the entry velocity the largest of the N slams
+    /// of the exposure exceeds with probability alpha [default: the most probable largest in N slams].
+    #[arg(long, value_name = "ALPHA")]
+    risk_level: Option<f64>,
     /// Design gate: every sensor design pressure above this (kPa) is a violation (exit status 4).
     #[arg(long, value_name = "P")]
     max_pressure_kpa: Option<f64>,
@@ -111,13 +115,7 @@ fn check_out(dir: &Path, force: bool) -> Result<()> {
     let Ok(entries) = std::fs::read_dir(dir) else {
         return Ok(());
     };
-    let known = [
-        "summary.json",
-        "pressures.csv",
-        "bow_force.csv",
-        "design_events.csv",
-        "cache",
-    ];
+    let known = ["summary.json", "pressures.csv", "bow_force.csv", "cache"];
     let other = entries
         .flatten()
         .map(|e| e.file_name().to_string_lossy().into_owned())
@@ -130,102 +128,6 @@ fn check_out(dir: &Path, force: bool) -> Result<()> {
         ))),
         _ => Ok(()),
     }
-}
-
-fn kpa(v: Option<f64>) -> String {
-    v.map_or("-".into(), |p| format!("{:.2}", p / 1e3))
-}
-
-/// The text tables: events, then the design pressure per station.
-fn tables(a: &Assessment) -> String {
-    let mut s = format!(
-        "assessment of {} ({}), fidelity {}\n\nevents (station x speed x wave):\n",
-        a.hull, a.loading, a.fidelity
-    );
-    s += "  station  speed_m_per_s  wave             flag                     v_entry_m_per_s  max_sensor_sph_kpa  max_sensor_analytic_kpa\n";
-    for e in &a.events {
-        let flag = serde_json::to_value(e.slam_flag)
-            .ok()
-            .and_then(|v| v.as_str().map(str::to_string))
-            .unwrap_or_default();
-        let sph = e
-            .sph
-            .as_ref()
-            .map(|r| r.sensors.iter().map(|q| q.raw_peak_pa).fold(0.0, f64::max));
-        let an = e
-            .analytic
-            .as_ref()
-            .map(|r| r.sensors.iter().map(|q| q.peak_pa).fold(0.0, f64::max));
-        s += &format!(
-            "  {:<7}  {:<13.2}  {:<15}  {:<23}  {:<15}  {:<18}  {}{}\n",
-            e.station,
-            e.speed_m_per_s,
-            e.wave,
-            flag,
-            e.entry_velocity_m_per_s
-                .map_or("-".into(), |v| format!("{v:.3}")),
-            kpa(sph),
-            kpa(an),
-            e.failed
-                .as_ref()
-                .map_or(String::new(), |f| format!("  FAILED: {f}"))
-        );
-    }
-    s += "\ndesign pressure per station and sensor (largest over events):\n";
-    for st in &a.stations {
-        s += &format!(
-            "  station {} (x {:.3} m): {} of {} events emerge, {} slam by Ochi's criterion",
-            st.station,
-            st.x_m,
-            st.emerging_events,
-            a.events
-                .iter()
-                .filter(|e| (e.station - st.station).abs() < 1e-9)
-                .count(),
-            st.slamming_events
-        );
-        if let Some(f) = &st.section_force_peak_n_per_m {
-            s += &format!(
-                "; section force {:.1} N/m ({}, {} m/s)",
-                f.value, f.source, f.speed_m_per_s
-            );
-        }
-        s += "\n";
-        for d in &st.design_pressure_pa {
-            s += &format!(
-                "    {:<10} {:>9.2} kPa  ({}, {} m/s, {})\n",
-                d.name,
-                d.value / 1e3,
-                d.source,
-                d.speed_m_per_s,
-                d.wave
-            );
-        }
-    }
-    if !a.irregular.is_empty() {
-        s += &format!(
-            "\nirregular seas ({}):\n  speed_m_per_s  sea              station  slam_probability  slams_per_hour  extreme_entry_velocity_m_per_s\n",
-            assess::plan::IRREGULAR_NOTE
-        );
-        for ir in &a.irregular {
-            let stations = ir["stations"].as_array().cloned().unwrap_or_default();
-            for (k, st) in stations.iter().enumerate() {
-                let f = a.stations.get(k).map_or(f64::NAN, |s| s.station);
-                s += &format!(
-                    "  {:<13.3}  {:<15}  {:<7}  {:<16.4}  {:<14.1}  {}\n",
-                    ir["speed_m_per_s"].as_f64().unwrap_or(f64::NAN),
-                    ir["sea"].as_str().unwrap_or(""),
-                    f,
-                    st["slam_probability"].as_f64().unwrap_or(f64::NAN),
-                    st["slams_per_hour"].as_f64().unwrap_or(f64::NAN),
-                    ir["extreme_entry_velocity_m_per_s"][k]
-                        .as_f64()
-                        .map_or("-".into(), |v| format!("{v:.3}"))
-                );
-            }
-        }
-    }
-    s
 }
 
 pub fn run(a: AssessArgs) -> Result<()> {
@@ -247,6 +149,13 @@ pub fn run(a: AssessArgs) -> Result<()> {
     }
     let out = a.out.clone().unwrap_or_else(|| default_out(&a.hull));
     check_out(&out, a.force)?;
+    if let Some(r) = a.risk_level
+        && !(r.is_finite() && r > 0.0 && r < 1.0)
+    {
+        return Err(Error::Invalid(format!(
+            "--risk-level must be a probability between 0 and 1 (exclusive), got {r}"
+        )));
+    }
     let (stations, station_warnings) = station::resolve_list(&hull, &a.station, &a.x_m)?;
     let mut limits = assess::limits::of_hull(&hull)?;
     if let Some(p) = a.max_pressure_kpa {
@@ -273,6 +182,11 @@ pub fn run(a: AssessArgs) -> Result<()> {
         use_cache: !a.no_cache,
         warnings: station_warnings,
         limits,
+        design_basis: a
+            .risk_level
+            .map_or(assess::design_event::Basis::MostProbableLargest, |r| {
+                assess::design_event::Basis::RiskLevel(r)
+            }),
         threads: a.threads,
         ..Settings::default()
     };
@@ -287,7 +201,7 @@ pub fn run(a: AssessArgs) -> Result<()> {
         v["outputs"] = serde_json::json!({ "folder": out.display().to_string() });
         global::print_json(v);
     } else {
-        print!("{}", tables(&result));
+        print!("{}", super::assess_tables::tables(&result));
         for w in &result.warnings {
             println!("{}", global::warning_line(w));
         }

@@ -7,6 +7,7 @@ use std::process::ExitCode;
 use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 
 mod assess;
+mod assess_tables;
 mod bench;
 mod completions;
 mod entry;

@@ -1,0 +1,273 @@
+//! Design events for irregular seas (issue #10): one water entry per slamming station, speed and sea,
+//! whose entry velocity comes from Ochi's slam statistics and whose profile shape comes from the response
+//! at the spectral peak.
+//!
+//! * **Entry velocity.** Given a slam (the keel emerges and re-enters faster than the threshold v_th),
+//!   the entry velocity V is Rayleigh distributed above v_th, P(V > v | slam) = exp(-(v^2 - v_th^2) /
+//!   (2 m2)), with m2 the relative-velocity variance (Ochi 1964). With N = slams per hour x exposure
+//!   hours (the sea file's `duration_h`, 1 h if not given):
+//!   - the most probable largest in N slams (default): V_N = sqrt(v_th^2 + 2 m2 ln N), N >= 1;
+//!   - at risk level alpha (`--risk-level`): the velocity the largest of the N slams exceeds with
+//!     probability alpha, 1 - (1 - exp(-(V^2 - v_th^2)/(2 m2)))^N = alpha, so
+//!     V_alpha = sqrt(v_th^2 - 2 m2 ln(1 - (1 - alpha)^(1/N))).
+//! * **Profile shape.** The relative motion of a regular head wave at the spectral peak frequency w_p,
+//!   with the amplitude zeta_a for which the keel-entry velocity equals V (found by bisection; the entry
+//!   velocity grows with zeta_a): the regular-wave entry profile v(t) of that wave, from keel entry until
+//!   the velocity reverses ([`crate::seakeeping::relative_motion::keel_entry`]).
+
+use nalgebra::Complex;
+use serde::Serialize;
+
+use crate::seakeeping::relative_motion::{KeelEntry, RelativeMotion, keel_entry};
+use crate::seakeeping::slamming::SlamStatistics;
+
+/// How the design entry velocity is chosen.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Basis {
+    /// The most probable largest entry velocity in the N slams of the exposure.
+    MostProbableLargest,
+    /// The entry velocity the largest of the N slams exceeds with this probability.
+    RiskLevel(f64),
+}
+
+/// The definition of a design event, as written wherever its result appears.
+#[derive(Debug, Clone, Serialize)]
+pub struct DesignEvent {
+    pub sea: String,
+    /// The definition in words, with N (and alpha).
+    pub definition: String,
+    pub exposure_h: f64,
+    pub slams_per_hour: f64,
+    /// N: the expected number of slams in the exposure.
+    pub expected_slams: f64,
+    pub risk_level: Option<f64>,
+    pub threshold_velocity_m_per_s: f64,
+    pub design_entry_velocity_m_per_s: f64,
+    /// The profile: a regular head wave at the spectral peak period, with this amplitude.
+    pub peak_period_s: f64,
+    pub equivalent_wave_amplitude_m: f64,
+}
+
+/// The design entry velocity of a station (None with fewer than one slam expected).
+pub fn design_velocity(st: &SlamStatistics, exposure_h: f64, basis: Basis) -> Option<(f64, f64)> {
+    let n = st.slams_per_hour * exposure_h;
+    if n.is_nan() || n < 1.0 || st.m2 <= 0.0 {
+        return None;
+    }
+    let v = match basis {
+        Basis::MostProbableLargest => st.most_probable_extreme_velocity(n),
+        Basis::RiskLevel(a) => {
+            let q = 1.0 - (1.0 - a).powf(1.0 / n);
+            (st.threshold_velocity.powi(2) - 2.0 * st.m2 * q.ln()).sqrt()
+        }
+    };
+    Some((v, n))
+}
+
+/// The words of a definition.
+pub fn definition(basis: Basis, n: f64, exposure_h: f64, peak_period_s: f64) -> String {
+    let what = match basis {
+        Basis::MostProbableLargest => format!(
+            "the most probable largest keel-entry velocity in N = {n:.1} slams (Ochi's slams per hour x \
+             {exposure_h} h exposure)"
+        ),
+        Basis::RiskLevel(a) => format!(
+            "the keel-entry velocity exceeded with probability alpha = {a} by the largest of N = {n:.1} slams \
+             (Ochi's slams per hour x {exposure_h} h exposure)"
+        ),
+    };
+    format!(
+        "design event: entry velocity = {what}; profile shape = the regular head wave at the spectral peak \
+         period {peak_period_s:.3} s scaled to that entry velocity"
+    )
+}
+
+/// The keel-entry profile of the regular wave (relative motion `rm` per unit amplitude, encounter frequency
+/// `omega_e`) whose amplitude gives the entry velocity `v` at a station of draft `draft`; the amplitude
+/// and the profile (`n` samples, ending at `max_depth` at most). None when no amplitude up to 100 times
+/// the emergence amplitude reaches `v`.
+pub fn scaled_entry(
+    rm: &RelativeMotion,
+    omega_e: f64,
+    draft: f64,
+    max_depth: f64,
+    v: f64,
+    n: usize,
+) -> Option<(f64, KeelEntry)> {
+    let s = rm.motion.norm();
+    if s <= 0.0 || !v.is_finite() || v <= 0.0 {
+        return None;
+    }
+    // Entry velocity at amplitude z: at the instant s(t) = draft on the way down.
+    let entry_v = |z: f64| {
+        let a = s * z;
+        if a <= draft {
+            return f64::NEG_INFINITY;
+        }
+        let t = ((draft / a).acos() - rm.motion.arg()) / omega_e;
+        -(rm.velocity * Complex::new(0.0, omega_e * t).exp()).re * z
+    };
+    let lo0 = draft / s * (1.0 + 1e-12);
+    let (mut lo, mut hi) = (lo0, 2.0 * lo0.max(1e-6));
+    while entry_v(hi) < v {
+        hi *= 2.0;
+        if hi > 100.0 * lo0.max(1e-6) {
+            return None;
+        }
+    }
+    for _ in 0..100 {
+        let mid = 0.5 * (lo + hi);
+        if entry_v(mid) < v {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    keel_entry(rm, omega_e, hi, draft, max_depth, n).map(|k| (hi, k))
+}
+
+/// The design events of every irregular sea, speed and station of a plan (appended after the regular
+/// waves' events, in the order speed, sea, station), and one line per station without one (why).
+pub(crate) fn plan_events(
+    p: &PlanInputs,
+    basis: Basis,
+) -> crate::error::Result<(Vec<super::plan::Event>, Vec<String>)> {
+    use super::plan::{EntryCase, Event};
+    use crate::report::sanity::SlamFlag;
+    use crate::seakeeping::relative_motion::at_station;
+    use crate::seakeeping::strip_theory::{StripSettings, respond};
+    let mut events = Vec::new();
+    let mut skipped = Vec::new();
+    for sp in &p.motions.speeds {
+        for (ir, sea) in sp.irregular.iter().zip(&p.sea.irregular) {
+            let omega_p = sea.spectrum.peak_frequency();
+            let tp = 2.0 * std::f64::consts::PI / omega_p;
+            let r = respond(p.model, omega_p, sp.speed_m_s, &StripSettings::default())?;
+            for (st, stats) in p.stations.iter().zip(&ir.stations) {
+                let label = format!("{}/design", ir.sea);
+                let Some((v, n)) = design_velocity(stats, ir.duration_h, basis) else {
+                    skipped.push(format!(
+                        "no design event at station {} Lpp, {:.3} m/s, sea {}: {:.2} slams expected in {} h \
+                         (fewer than one)",
+                        st.aft_of_fp,
+                        sp.speed_m_s,
+                        ir.sea,
+                        stats.slams_per_hour * ir.duration_h,
+                        ir.duration_h
+                    ));
+                    continue;
+                };
+                let rm = at_station(&r, st.x, 1.0)?;
+                let Some((zeta, k)) = scaled_entry(&rm, r.omega_e, st.draft, st.height, v, 41)
+                else {
+                    skipped.push(format!(
+                        "no design event at station {} Lpp, {:.3} m/s, sea {}: no regular wave at the spectral \
+                         peak period gives the design entry velocity {v:.3} m/s",
+                        st.aft_of_fp, sp.speed_m_s, ir.sea
+                    ));
+                    continue;
+                };
+                let design = DesignEvent {
+                    sea: ir.sea.clone(),
+                    definition: definition(basis, n, ir.duration_h, tp),
+                    exposure_h: ir.duration_h,
+                    slams_per_hour: stats.slams_per_hour,
+                    expected_slams: n,
+                    risk_level: match basis {
+                        Basis::RiskLevel(a) => Some(a),
+                        Basis::MostProbableLargest => None,
+                    },
+                    threshold_velocity_m_per_s: stats.threshold_velocity,
+                    design_entry_velocity_m_per_s: v,
+                    peak_period_s: tp,
+                    equivalent_wave_amplitude_m: zeta,
+                };
+                events.push(Event {
+                    station: st.aft_of_fp,
+                    x: st.x,
+                    speed_m_s: sp.speed_m_s,
+                    wave: label,
+                    flag: SlamFlag::Slam,
+                    entry_velocity_m_s: Some(k.entry_velocity),
+                    entry_time_s: None,
+                    encounter_period_s: 2.0 * std::f64::consts::PI / r.omega_e,
+                    wave_omega_rad_s: omega_p,
+                    wave_amplitude_m: zeta,
+                    draft_m: st.draft,
+                    entry: Some(EntryCase {
+                        half_points: p.hull.section_at(st.x)?.points.clone(),
+                        motion: crate::impact::entry_motion(&k),
+                        sensors: p.sensors_at(st.aft_of_fp),
+                    }),
+                    design: Some(design),
+                });
+            }
+        }
+    }
+    Ok((events, skipped))
+}
+
+/// What [`plan_events`] needs of a plan in the making.
+pub(crate) struct PlanInputs<'a> {
+    pub hull: &'a crate::hull::Hull,
+    pub sea: &'a crate::sea::SeaState,
+    pub model: &'a crate::seakeeping::ShipModel,
+    pub motions: &'a crate::seakeeping::analysis::Report,
+    pub stations: &'a [crate::seakeeping::analysis::Station],
+    pub sensors: &'a [super::plan::StationSensors],
+}
+
+impl PlanInputs<'_> {
+    fn sensors_at(&self, f: f64) -> Vec<crate::sph::SensorSpec> {
+        self.sensors
+            .iter()
+            .find(|q| (q.station - f).abs() < 1e-9)
+            .map(|q| q.sensors.clone())
+            .unwrap_or_default()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn stats(m2: f64, rate: f64) -> SlamStatistics {
+        SlamStatistics {
+            x: 0.0,
+            speed: 1.0,
+            draft: 0.1,
+            m0: 0.01,
+            m2,
+            threshold_velocity: 0.5,
+            probability: 0.1,
+            slams_per_hour: rate,
+        }
+    }
+
+    #[test]
+    fn most_probable_largest_and_risk_level_by_hand() {
+        let st = stats(0.04, 10.0);
+        // N = 10 slams in 1 h: V = sqrt(0.25 + 2 * 0.04 * ln 10)
+        let (v, n) = design_velocity(&st, 1.0, Basis::MostProbableLargest).unwrap();
+        assert!((n - 10.0).abs() < 1e-12);
+        assert!((v - (0.25f64 + 0.08 * 10f64.ln()).sqrt()).abs() < 1e-12);
+        // alpha = 1 - (1 - 1/e)^N gives exp(-(V^2 - v_th^2)/(2 m2)) = 1/e, V^2 = v_th^2 + 2 m2
+        let a = 1.0 - (1.0 - (-1.0f64).exp()).powf(10.0);
+        let (v, _) = design_velocity(&st, 1.0, Basis::RiskLevel(a)).unwrap();
+        assert!((v - (0.25f64 + 0.08).sqrt()).abs() < 1e-9, "{v}");
+        assert!(design_velocity(&stats(0.04, 0.5), 1.0, Basis::MostProbableLargest).is_none());
+    }
+
+    #[test]
+    fn scaled_profile_enters_at_the_design_velocity() {
+        // pure heave s = z cos(t), v = -z sin(t): entry V = sqrt(A^2 - T^2) for w = 1
+        let rm = RelativeMotion {
+            x: 0.0,
+            motion: Complex::new(1.0, 0.0),
+            velocity: Complex::new(0.0, 1.0),
+        };
+        let (z, k) = scaled_entry(&rm, 1.0, 0.3, 10.0, 0.4, 11).unwrap();
+        assert!((z - 0.5).abs() < 1e-9, "{z}");
+        assert!((k.entry_velocity - 0.4).abs() < 1e-9);
+    }
+}
