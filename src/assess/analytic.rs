@@ -2,6 +2,7 @@
 //! wetting condition for the actual shape) and the modified Logvinovich (MLM; Korobkin 2004) mean pressure
 //! on every sensor panel, along the event's entry-velocity history v(t).
 
+use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use super::plan::EntryCase;
@@ -107,9 +108,10 @@ pub fn estimate(case: &EntryCase) -> Result<Estimate> {
                 .into(),
         );
     }
+    // Sensors are independent: in parallel (collected in order, so the result does not depend on threads).
     let sensors = case
         .sensors
-        .iter()
+        .par_iter()
         .map(|s| {
             let s1 = (s.s_m - 0.5 * s.width_m).max(0.0);
             let s2 = s.s_m + 0.5 * s.width_m;
