@@ -381,3 +381,25 @@ fn irregular_seas_give_design_events_that_state_their_definition() {
     let csv = std::fs::read_to_string(out.join("pressures.csv")).unwrap();
     assert!(csv.contains("design_event_definition") && csv.contains("alpha = 0.01"));
 }
+
+#[test]
+fn the_flat_keel_stations_get_the_air_cushion_warning() {
+    let h = Hull::from_file(&data("hulls/ochi-vform.toml")).unwrap();
+    let sea = SeaState::from_file(&data("sea_states/ochi-1958.toml")).unwrap();
+    let s = Settings {
+        stations: vec![0.093, 0.227],
+        speeds: Some(vec![2.0]),
+        ..Settings::default()
+    };
+    let plan = assess::plan::plan(&h, &sea, &s).unwrap();
+    let air: Vec<&String> = plan
+        .warnings
+        .iter()
+        .filter(|w| w.contains("air trapped"))
+        .collect();
+    assert_eq!(air.len(), 1, "{air:?}");
+    assert!(
+        air[0].starts_with("station 0.227 Lpp has a flat keel"),
+        "{air:?}"
+    );
+}

@@ -281,6 +281,12 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
     let mut warnings = s.warnings.clone();
     warnings.extend(motions.warnings.iter().cloned());
     warnings.extend(skipped);
+    for &f in &at {
+        warnings.extend(impact::air_cushion_warning(
+            f,
+            &hull.section_at(hull.station_x(f))?.points,
+        ));
+    }
     for q in sensors.iter().filter(|q| q.default) {
         warnings.push(format!(
             "station {} Lpp carries no sensors in the hull file: {} default panels {}..{} are used, one every \

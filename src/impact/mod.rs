@@ -106,3 +106,37 @@ pub fn entry_motion(entry: &KeelEntry) -> MotionSpec {
             .collect(),
     }
 }
+
+/// Half-width of the flat part of a section's keel (m): the run of contour points from the keel at the
+/// keel's height (0 for a keel with deadrise).
+pub fn flat_keel_half_width(points: &[[f64; 2]]) -> f64 {
+    let Some(z0) = points.first().map(|p| p[1]) else {
+        return 0.0;
+    };
+    let tol = 1e-9
+        * points
+            .iter()
+            .map(|p| p[0].abs() + p[1].abs())
+            .fold(1.0, f64::max);
+    points
+        .iter()
+        .take_while(|p| (p[1] - z0).abs() <= tol)
+        .map(|p| p[0])
+        .fold(0.0, f64::max)
+}
+
+/// The warning for a station with a flat keel at least 5 % of its largest half-breadth wide (None
+/// otherwise): air trapped under a flat bottom cushions the impact, which the single-phase models do not
+/// represent (Veen 2010 s. 6.3: SPH about twice Ochi's measured peaks at the flat 0.174 Lpp section).
+pub fn air_cushion_warning(aft_of_fp: f64, points: &[[f64; 2]]) -> Option<String> {
+    let flat = flat_keel_half_width(points);
+    let widest = points.iter().map(|p| p[0]).fold(0.0, f64::max);
+    (flat > 0.0 && flat >= 0.05 * widest).then(|| {
+        format!(
+            "station {aft_of_fp} Lpp has a flat keel (half-width {flat:.4} m): air trapped between the flat \
+             bottom and the water cushions the impact, which neither the single-phase SPH nor the analytic \
+             models represent, so its pressures are over-predicted (Veen 2010 s. 6.3: SPH about twice Ochi's \
+             measured peaks at his flat section)"
+        )
+    })
+}
