@@ -37,6 +37,10 @@ pub struct Estimate {
     pub sensors: Vec<SensorEstimate>,
     /// Where the models stop or switch to acoustic values.
     pub notes: Vec<String>,
+    /// The generalised Wagner force history [t since keel entry (s), F (N/m)] without the samples at the
+    /// acoustic limit (for the time-coincident bow force; not written to summary.json).
+    #[serde(skip)]
+    pub force_history: Vec<[f64; 2]>,
 }
 
 impl Estimate {
@@ -126,10 +130,15 @@ pub fn estimate(case: &EntryCase) -> Result<Estimate> {
             }
         })
         .collect();
+    let force_history = (0..w.t.len().min(w.force.len()))
+        .filter(|&k| !w.acoustic_limited.get(k).copied().unwrap_or(false))
+        .map(|k| [w.t[k], w.force[k]])
+        .collect();
     Ok(Estimate {
         force_peak_n_per_m: force_peak,
         force_peak_time_s: force_time,
         sensors,
         notes,
+        force_history,
     })
 }

@@ -223,12 +223,42 @@ pub fn run(
         });
     }
     let failed_runs = events.iter().filter(|e| e.failed.is_some()).count();
+    let mut bow_force = Vec::new();
+    let mut k = 0;
+    while k < events.len() {
+        let same = |j: usize| {
+            events[j].speed_m_per_s == events[k].speed_m_per_s && events[j].wave == events[k].wave
+        };
+        let end = (k..events.len())
+            .find(|&j| !same(j))
+            .unwrap_or(events.len());
+        let group: Vec<&EventResult> = events[k..end].iter().collect();
+        let entry: Vec<Option<f64>> = plan.events[k..end].iter().map(|e| e.entry_time_s).collect();
+        bow_force.extend(super::bow_force::of_events(
+            &group,
+            &entry,
+            plan.events[k].encounter_period_s,
+        ));
+        k = end;
+    }
     let at: Vec<(f64, f64)> = plan
         .stations
         .iter()
         .map(|&f| (f, hull.station_x(f)))
         .collect();
-    let stations = results::stations(&events, &at);
+    let mut stations = results::stations(&events, &at);
+    for (st, q) in stations.iter_mut().zip(&plan.sensors) {
+        st.default_sensors = q.default;
+        st.sensors = q
+            .sensors
+            .iter()
+            .map(|s| results::SensorInfo {
+                name: s.name.clone(),
+                girth_m: s.s_m,
+                width_m: s.width_m,
+            })
+            .collect();
+    }
     let settings = serde_json::json!({
         "loading": plan.loading,
         "stations": plan.stations,
@@ -266,7 +296,7 @@ pub fn run(
             })
         })
         .collect();
-    let a = Assessment {
+    let mut a = Assessment {
         tool: results::tool(),
         provenance,
         hull: hull.name.clone(),
@@ -277,15 +307,18 @@ pub fn run(
         events,
         stations,
         irregular,
+        bow_force_definition: super::bow_force::DEFINITION,
+        bow_force,
         failed_runs,
+        limits: s.limits.clone(),
+        limit_violations: Vec::new(),
         warnings: plan.warnings.clone(),
     };
-    let sensors_of = |f: f64| -> Vec<String> {
-        crate::impact::station_sensors(hull, hull.station_x(f))
-            .into_iter()
-            .map(|q| q.name)
-            .collect()
-    };
+    a.limit_violations = super::limits::check(&a, &s.limits);
+    let unchecked = super::limits::unchecked(&a, &s.limits);
+    a.warnings.extend(unchecked);
+    let sensors_of =
+        |f: f64| -> Vec<String> { plan.sensors_at(f).iter().map(|q| q.name.clone()).collect() };
     let written = results::write(out, &a, &sensors_of)?;
     Ok((a, written))
 }

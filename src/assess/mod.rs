@@ -16,6 +16,7 @@
 //! * [`limits`]: the design-pressure gate.
 
 pub mod analytic;
+pub mod bow_force;
 pub mod cache;
 pub mod execute;
 pub mod limits;

@@ -56,6 +56,11 @@ pub struct Settings {
     pub use_cache: bool,
     /// Parallel SPH runs (None: rayon's default, one per core).
     pub threads: Option<usize>,
+    /// Design pressure limits (`--max-pressure-kpa`, the hull file's `[limits]`); violations are listed in
+    /// the results.
+    pub limits: Vec<super::limits::Limit>,
+    /// Warnings from reading the settings (e.g. a station outside the perpendiculars), kept in the results.
+    pub warnings: Vec<String>,
 }
 
 impl Default for Settings {
@@ -70,6 +75,8 @@ impl Default for Settings {
             strips: 31,
             use_cache: true,
             threads: None,
+            limits: Vec::new(),
+            warnings: Vec::new(),
         }
     }
 }
@@ -86,6 +93,9 @@ pub struct Event {
     pub flag: SlamFlag,
     /// Velocity at keel entry (m/s), when the keel emerges.
     pub entry_velocity_m_s: Option<f64>,
+    /// Instant of keel entry within the encounter period (s; 0: wave crest at midship), and the period.
+    pub entry_time_s: Option<f64>,
+    pub encounter_period_s: f64,
     /// What runs: the section, the prescribed entry motion and the sensors (None: the keel does not
     /// emerge, nothing runs).
     pub entry: Option<EntryCase>,
@@ -110,6 +120,27 @@ impl Event {
     }
 }
 
+/// The sensors of one station.
+#[derive(Debug, Clone)]
+pub struct StationSensors {
+    pub station: f64,
+    pub x: f64,
+    pub sensors: Vec<SensorSpec>,
+    /// True when the hull file has none at this station and these are the default panels
+    /// ([`impact::default_sensors`]).
+    pub default: bool,
+}
+
+impl Plan {
+    /// The sensors of the station at `f` (fraction of Lpp aft of the FP).
+    pub fn sensors_at(&self, f: f64) -> &[SensorSpec] {
+        self.sensors
+            .iter()
+            .find(|s| (s.station - f).abs() < 1e-9)
+            .map_or(&[], |s| s.sensors.as_slice())
+    }
+}
+
 /// The events of an assessment and the motions they come from.
 #[derive(Debug, Clone)]
 pub struct Plan {
@@ -119,6 +150,8 @@ pub struct Plan {
     pub speeds: Vec<f64>,
     /// The strip-theory report (relative motion, keel entry, irregular-sea statistics).
     pub motions: Report,
+    /// The sensors of each station (same order as `stations`), from the hull file or the defaults.
+    pub sensors: Vec<StationSensors>,
     /// In the order speed, wave, station.
     pub events: Vec<Event>,
     pub warnings: Vec<String>,
@@ -152,6 +185,27 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
                 .map_err(|e| Error::Invalid(format!("--station {f}: {e}")))?,
         );
     }
+    let mut sensors = Vec::new();
+    for &f in &at {
+        let x = hull.station_x(f);
+        let given = impact::station_sensors(hull, x);
+        sensors.push(if given.is_empty() {
+            StationSensors {
+                station: f,
+                x,
+                sensors: impact::default_sensors::default_sensors(hull, loading, x)
+                    .map_err(|e| Error::Invalid(format!("--station {f}: {e}")))?,
+                default: true,
+            }
+        } else {
+            StationSensors {
+                station: f,
+                x,
+                sensors: given,
+                default: false,
+            }
+        });
+    }
     let model = ShipModel::from_hull(hull, loading, s.strips)?;
     let speeds = match &s.speeds {
         Some(v) => v.clone(),
@@ -175,7 +229,11 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
                     Some(k) => Some(EntryCase {
                         half_points: hull.section_at(st.x)?.points.clone(),
                         motion: impact::entry_motion(k),
-                        sensors: impact::station_sensors(hull, st.x),
+                        sensors: sensors
+                            .iter()
+                            .find(|q| (q.station - st.aft_of_fp).abs() < 1e-9)
+                            .map(|q| q.sensors.clone())
+                            .unwrap_or_default(),
                     }),
                     None => None,
                 };
@@ -186,27 +244,35 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
                     wave: w.wave.clone(),
                     flag,
                     entry_velocity_m_s: st.keel_entry.as_ref().map(|k| k.entry_velocity),
+                    entry_time_s: st.keel_entry.as_ref().map(|k| k.t_entry),
+                    encounter_period_s: 2.0 * std::f64::consts::PI / w.omega_e,
                     entry,
                 });
             }
         }
     }
-    let mut warnings = motions.warnings.clone();
+    let mut warnings = s.warnings.clone();
+    warnings.extend(motions.warnings.iter().cloned());
     if !sea.irregular.is_empty() {
         warnings.push(IRREGULAR_NOTE.to_string());
     }
-    for &f in &at {
-        if impact::station_sensors(hull, hull.station_x(f)).is_empty() {
-            warnings.push(format!(
-                "station {f} Lpp carries no sensors in the hull file: only its section force is reported"
-            ));
-        }
+    for q in sensors.iter().filter(|q| q.default) {
+        warnings.push(format!(
+            "station {} Lpp carries no sensors in the hull file: {} default panels {}..{} are used, one every \
+             5 % of the girth from the keel to the design waterline (each 5 % of it wide), continued up the \
+             side and flare to the deck edge",
+            q.station,
+            q.sensors.len(),
+            q.sensors.first().map_or("", |s| s.name.as_str()),
+            q.sensors.last().map_or("", |s| s.name.as_str()),
+        ));
     }
     Ok(Plan {
         loading: loading.name.clone(),
         stations: at,
         speeds,
         motions,
+        sensors,
         events,
         warnings,
     })

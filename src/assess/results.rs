@@ -103,12 +103,26 @@ pub struct DesignValue {
     pub wave: String,
 }
 
+/// Where a sensor is on its station's contour.
+#[derive(Debug, Clone, Serialize)]
+pub struct SensorInfo {
+    pub name: String,
+    /// Girth from the keel along the contour to the sensor centre (m).
+    pub girth_m: f64,
+    /// Width along the contour (m).
+    pub width_m: f64,
+}
+
 /// Per station: design pressure per sensor and peak section force, each the maximum over the events with
 /// an SPH run at that station, or over all events where none has one (analytic values).
 #[derive(Debug, Clone, Serialize)]
 pub struct StationResult {
     pub station: f64,
     pub x_m: f64,
+    /// The station's sensors; `default_sensors` is true when the hull file has none there and these are
+    /// the default panels (every 5 % of the keel-to-waterline girth, up to the deck edge).
+    pub default_sensors: bool,
+    pub sensors: Vec<SensorInfo>,
     /// Sensor design pressures (`value` in Pa).
     pub design_pressure_pa: Vec<DesignValue>,
     /// Section force peak (`value` in N/m).
@@ -132,7 +146,13 @@ pub struct Assessment {
     pub stations: Vec<StationResult>,
     /// Slam statistics of the irregular seas per speed (no design events are run for them).
     pub irregular: Vec<serde_json::Value>,
+    /// Total bow slamming force and point of action per speed and regular wave ([`super::bow_force`]).
+    pub bow_force_definition: &'static str,
+    pub bow_force: Vec<super::bow_force::BowForce>,
     pub failed_runs: usize,
+    /// The design pressure limits checked and the violations, one line each.
+    pub limits: Vec<super::limits::Limit>,
+    pub limit_violations: Vec<String>,
     pub warnings: Vec<String>,
 }
 
@@ -183,6 +203,8 @@ pub fn stations(events: &[EventResult], at: &[(f64, f64)]) -> Vec<StationResult>
             StationResult {
                 station: f,
                 x_m: x,
+                default_sensors: false,
+                sensors: Vec::new(),
                 design_pressure_pa: names
                     .iter()
                     .filter_map(|n| best(&|e: &EventResult| e.sensor_peak(n), n))
@@ -275,6 +297,51 @@ pub fn pressures_csv(a: &Assessment, sensors_of: &dyn Fn(f64) -> Vec<String>) ->
     crate::sph::output::csv_text(Some(&a.provenance), &header, &rows)
 }
 
+/// One row per speed x wave: the total bow slamming force and its point of action (see
+/// [`super::bow_force::DEFINITION`], repeated as a note).
+pub fn bow_force_csv(a: &Assessment) -> Result<String> {
+    let header: Vec<String> = [
+        "speed_m_per_s",
+        "wave",
+        "stations",
+        "peak_sum_total_n",
+        "peak_sum_x_action_m",
+        "time_coincident_total_n",
+        "time_coincident_x_action_m",
+        "time_coincident_time_s",
+        "note",
+    ]
+    .iter()
+    .map(|s| s.to_string())
+    .collect();
+    let rows = a
+        .bow_force
+        .iter()
+        .map(|b| {
+            vec![
+                crate::report::csv_number(b.speed_m_per_s),
+                b.wave.clone(),
+                b.stations.len().to_string(),
+                num(b.peak_sum_total_n),
+                num(b.peak_sum_x_action_m),
+                num(b.time_coincident.as_ref().map(|c| c.total_n)),
+                num(b.time_coincident.as_ref().map(|c| c.x_action_m)),
+                num(b.time_coincident.as_ref().map(|c| c.time_s)),
+                b.note.clone().unwrap_or_default(),
+            ]
+        })
+        .collect::<Vec<_>>();
+    let mut text = crate::sph::output::csv_text(Some(&a.provenance), &header, &rows)?;
+    let note = format!("# note: {}\n", super::bow_force::DEFINITION);
+    let at: usize = text
+        .lines()
+        .take_while(|l| l.starts_with('#'))
+        .map(|l| l.len() + 1)
+        .sum();
+    text.insert_str(at, &note);
+    Ok(text)
+}
+
 /// Write `summary.json` and `pressures.csv` into `dir` (atomically); returns the paths.
 pub fn write(
     dir: &Path,
@@ -288,7 +355,9 @@ pub fn write(
     write_text_atomic(&summary, &(json + "\n"))?;
     let csv = dir.join("pressures.csv");
     write_text_atomic(&csv, &pressures_csv(a, sensors_of)?)?;
-    Ok(vec![summary, csv])
+    let bow = dir.join("bow_force.csv");
+    write_text_atomic(&bow, &bow_force_csv(a)?)?;
+    Ok(vec![summary, csv, bow])
 }
 
 /// The tool name and version, as every summary gives it.

@@ -12,6 +12,7 @@ use slamtool::{Error, Result};
 
 use super::global::{self, JsonArg};
 use super::progress_bar;
+use super::station;
 
 /// Examples at the end of `slamtool assess --help`.
 pub const EXAMPLES: &str = "\
@@ -39,6 +40,14 @@ pub struct AssessArgs {
         allow_negative_numbers = true
     )]
     station: Vec<f64>,
+    /// Stations as x in m from midship (positive forward), comma-separated (with or instead of --station).
+    #[arg(
+        long,
+        value_delimiter = ',',
+        value_name = "X",
+        allow_negative_numbers = true
+    )]
+    x_m: Vec<f64>,
     /// Speeds in m/s, comma-separated (replaces the sea file's speeds).
     #[arg(
         long,
@@ -76,23 +85,19 @@ pub struct AssessArgs {
     force: bool,
     #[command(flatten)]
     json: JsonArg,
-    /// Output folder [default: reports/<hull name>/].
+    /// Output folder [default: reports/<hull file name without .toml>/].
     #[arg(short, long, value_name = "DIR", alias = "output")]
     out: Option<PathBuf>,
 }
 
-/// A file-name-safe form of a hull name ("Ochi V-form (1958)" -> "ochi-v-form-1958").
-fn slug(name: &str) -> String {
-    let mut s = String::new();
-    for c in name.chars() {
-        if c.is_ascii_alphanumeric() {
-            s.push(c.to_ascii_lowercase());
-        } else if !s.ends_with('-') {
-            s.push('-');
-        }
-    }
-    let s = s.trim_matches('-').to_string();
-    if s.is_empty() { "hull".into() } else { s }
+/// The default output folder: `reports/<hull file stem>/` (`hulls/ochi-vform.toml` -> `reports/ochi-vform`).
+pub fn default_out(hull_file: &Path) -> PathBuf {
+    let stem = hull_file
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .filter(|s| !s.is_empty())
+        .unwrap_or_else(|| "hull".into());
+    Path::new("reports").join(stem)
 }
 
 /// Refuse a folder that holds other things than an earlier assessment, unless --force.
@@ -106,7 +111,13 @@ fn check_out(dir: &Path, force: bool) -> Result<()> {
     let Ok(entries) = std::fs::read_dir(dir) else {
         return Ok(());
     };
-    let known = ["summary.json", "pressures.csv", "cache"];
+    let known = [
+        "summary.json",
+        "pressures.csv",
+        "bow_force.csv",
+        "design_events.csv",
+        "cache",
+    ];
     let other = entries
         .flatten()
         .map(|e| e.file_name().to_string_lossy().into_owned())
@@ -234,14 +245,20 @@ pub fn run(a: AssessArgs) -> Result<()> {
             "--max-pressure-kpa must be a positive number, got {p}"
         )));
     }
-    let out = a
-        .out
-        .clone()
-        .unwrap_or_else(|| Path::new("reports").join(slug(&hull.name)));
+    let out = a.out.clone().unwrap_or_else(|| default_out(&a.hull));
     check_out(&out, a.force)?;
+    let (stations, station_warnings) = station::resolve_list(&hull, &a.station, &a.x_m)?;
+    let mut limits = assess::limits::of_hull(&hull)?;
+    if let Some(p) = a.max_pressure_kpa {
+        limits.push(assess::limits::Limit {
+            scope: assess::limits::Scope::All,
+            pressure_pa: p * 1e3,
+            origin: "--max-pressure-kpa".into(),
+        });
+    }
     let settings = Settings {
         loading: a.loading.clone(),
-        stations: a.station.clone(),
+        stations,
         speeds: (!a.speeds.is_empty()).then(|| a.speeds.clone()),
         fidelity: a.fidelity,
         overrides: Overrides {
@@ -254,14 +271,13 @@ pub fn run(a: AssessArgs) -> Result<()> {
             ..StudyPlan::default()
         },
         use_cache: !a.no_cache,
+        warnings: station_warnings,
+        limits,
         threads: a.threads,
         ..Settings::default()
     };
     let (result, _written) = assess::run(&hull, &sea, &settings, &out, &progress_bar::handle())?;
-    let violations = a
-        .max_pressure_kpa
-        .map(|p| assess::limits::violations(&result, p * 1e3))
-        .unwrap_or_default();
+    let violations = result.limit_violations.clone();
     if a.json.json {
         for w in &result.warnings {
             global::warn_stderr(w);
@@ -269,7 +285,6 @@ pub fn run(a: AssessArgs) -> Result<()> {
         let mut v =
             serde_json::to_value(&result).map_err(|e| Error::Invalid(format!("summary: {e}")))?;
         v["outputs"] = serde_json::json!({ "folder": out.display().to_string() });
-        v["limit_violations"] = serde_json::json!(violations);
         global::print_json(v);
     } else {
         print!("{}", tables(&result));
@@ -283,9 +298,8 @@ pub fn run(a: AssessArgs) -> Result<()> {
     }
     if !violations.is_empty() {
         return Err(Error::DesignLimit(format!(
-            "{} sensor design pressure(s) above {} kPa",
-            violations.len(),
-            a.max_pressure_kpa.unwrap_or_default()
+            "{} design pressure limit violation(s) (listed above and in summary.json)",
+            violations.len()
         )));
     }
     if result.failed_runs > 0 {

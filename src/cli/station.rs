@@ -81,3 +81,22 @@ pub fn outside_perpendiculars(hull: &Hull, x: f64, given: &str) -> Option<String
         None
     }
 }
+
+/// Stations given as lists, `--station F,..` and/or `--x-m X,..`, each checked against the hull (a station
+/// outside the offsets is an error naming the option). Returns them in the order given, `--station` first,
+/// as fractions of Lpp aft of the FP, with the warnings of stations outside the perpendiculars.
+pub fn resolve_list(hull: &Hull, stations: &[f64], x_m: &[f64]) -> Result<(Vec<f64>, Vec<String>)> {
+    let mut at = Vec::new();
+    let mut warnings = Vec::new();
+    let given = stations
+        .iter()
+        .map(|&f| (hull.station_x(f), format!("--station {f}")))
+        .chain(x_m.iter().map(|&x| (x, format!("--x-m {x}"))));
+    for (x, g) in given {
+        let r = check(hull, x, g)?;
+        warnings.extend(r.warning);
+        // Rounded to 1e-9 Lpp, as the sensor stations are (x -> fraction is not exact in floating point).
+        at.push((hull.aft_of_fp(r.x) * 1e9).round() / 1e9);
+    }
+    Ok((at, warnings))
+}

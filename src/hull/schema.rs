@@ -18,6 +18,10 @@ pub(crate) struct HullFile {
     pub offsets_csv: Option<Spanned<OffsetsCsvRaw>>,
     #[serde(default)]
     pub sensor: Vec<Spanned<SensorRaw>>,
+    /// Design pressure limits of `slamtool assess`, read and checked by `assess::limits` (kept here only so
+    /// that the table is accepted).
+    #[allow(dead_code)]
+    pub limits: Option<toml::Value>,
 }
 
 #[derive(Debug, Deserialize)]

@@ -7,6 +7,8 @@
 //! [`crate::sph::body`]). The relative motion s(t) and velocity come from strip theory
 //! ([`crate::seakeeping::relative_motion`]); the downward entry velocity is V = -Ds/Dt.
 
+pub mod default_sensors;
+
 use crate::error::{Error, Result};
 use crate::hull::{Hull, LoadingCondition};
 use crate::seakeeping::analysis::Station;

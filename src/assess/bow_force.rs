@@ -1,0 +1,186 @@
+//! The total bow slamming force and its point of action, per speed and wave: the section slamming forces
+//! per metre f(x) of the assessed stations integrated along the bow (the "+t" half of the 2D+t method;
+//! Veen 2010, ch. 6 combines the simulated cross-sections into the hull's slamming but gives no formula for
+//! a total force, so the definition here is this tool's):
+//!
+//! F = ∫ f(x) dx,    x_F = ∫ x f(x) dx / F,
+//!
+//! with f linear between the assessed stations (trapezoid rule; the moment integral is exact for the
+//! linear f), over the span from the aftmost to the foremost assessed station only: nothing is
+//! extrapolated beyond them. A station whose keel stays in the water has f = 0 (no slam).
+//!
+//! Two totals are given:
+//! * `peak_sum`: f is each station's peak section force, whenever it occurs. The peaks of different
+//!   stations do not occur together, so this is an upper bound of the total force.
+//! * `time_coincident`: the largest over time of ∫ f(x, t) dx, with each station's generalised Wagner force
+//!   history placed at its keel-entry instant within the encounter period. It uses the analytic histories
+//!   (the SPH histories are in the run folders), and is the total a hull girder feels at one instant.
+
+use serde::Serialize;
+
+use super::results::EventResult;
+
+/// How the bow force is defined, as written into summary.json and the CSV notes.
+pub const DEFINITION: &str = "total bow slamming force F = integral of the section force per metre f(x) over \
+x, f linear between the assessed stations (trapezoid rule), from the aftmost to the foremost assessed \
+station only (no extrapolation), f = 0 where the keel stays in the water; point of action x_F = integral \
+of x f dx / F (m from midship, positive forward). peak_sum: f = each station's peak section force (SPH \
+where run, else generalised Wagner), an upper bound because the peaks are not simultaneous; \
+time_coincident: the largest over time of the integral of the generalised Wagner force histories placed at \
+each station's keel-entry instant";
+
+/// F and x_F of f over x (x in any order; pairs sorted by x). None with fewer than two stations or no
+/// force.
+pub fn integrate(x: &[f64], f: &[f64]) -> Option<(f64, f64)> {
+    let mut p: Vec<(f64, f64)> = x.iter().copied().zip(f.iter().copied()).collect();
+    if p.len() < 2 {
+        return None;
+    }
+    p.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let (mut total, mut moment) = (0.0, 0.0);
+    for w in p.windows(2) {
+        let ((x0, f0), (x1, f1)) = (w[0], w[1]);
+        let h = x1 - x0;
+        total += 0.5 * h * (f0 + f1);
+        moment += h / 6.0 * (x0 * (2.0 * f0 + f1) + x1 * (f0 + 2.0 * f1));
+    }
+    (total > 0.0).then(|| (total, moment / total))
+}
+
+/// One station's contribution.
+#[derive(Debug, Clone, Serialize)]
+pub struct StationForce {
+    pub station: f64,
+    pub x_m: f64,
+    /// Peak section force per metre (N/m; 0 where the keel stays in the water).
+    pub section_force_peak_n_per_m: f64,
+    /// "sph", "analytic" or "no-emergence".
+    pub source: &'static str,
+}
+
+/// The coincident total at its instant.
+#[derive(Debug, Clone, Serialize)]
+pub struct Coincident {
+    pub total_n: f64,
+    pub x_action_m: f64,
+    /// Instant within the encounter period (s; 0: wave crest at midship).
+    pub time_s: f64,
+}
+
+/// The bow force of one speed and wave.
+#[derive(Debug, Clone, Serialize)]
+pub struct BowForce {
+    pub speed_m_per_s: f64,
+    pub wave: String,
+    pub stations: Vec<StationForce>,
+    /// Upper bound from the peaks (N) and its point of action (m from midship).
+    pub peak_sum_total_n: Option<f64>,
+    pub peak_sum_x_action_m: Option<f64>,
+    /// From the analytic histories at one instant.
+    pub time_coincident: Option<Coincident>,
+    pub note: Option<String>,
+}
+
+/// Linear interpolation in a history [t, f], 0 outside it.
+fn at(h: &[[f64; 2]], t: f64) -> f64 {
+    if h.is_empty() || t < h[0][0] || t > h[h.len() - 1][0] {
+        return 0.0;
+    }
+    let k = h.partition_point(|p| p[0] <= t).clamp(1, h.len() - 1);
+    let (a, b) = (h[k - 1], h[k]);
+    if b[0] > a[0] {
+        a[1] + (b[1] - a[1]) * (t - a[0]) / (b[0] - a[0])
+    } else {
+        b[1]
+    }
+}
+
+/// Samples of the encounter period in the coincident search.
+const SAMPLES: usize = 4000;
+
+/// The bow force of the events of one speed and wave (`events` at distinct stations), `entry[i]` the keel
+/// entry instant of event i within the encounter period `period` (s).
+pub fn of_events(events: &[&EventResult], entry: &[Option<f64>], period: f64) -> Option<BowForce> {
+    let first = events.first()?;
+    let stations: Vec<StationForce> = events
+        .iter()
+        .map(|e| {
+            let (v, src) = e.force_peak().unwrap_or((0.0, "no-emergence"));
+            StationForce {
+                station: e.station,
+                x_m: e.x_m,
+                section_force_peak_n_per_m: v,
+                source: src,
+            }
+        })
+        .collect();
+    let xs: Vec<f64> = stations.iter().map(|s| s.x_m).collect();
+    let fs: Vec<f64> = stations
+        .iter()
+        .map(|s| s.section_force_peak_n_per_m)
+        .collect();
+    let peak = integrate(&xs, &fs);
+    let mut best: Option<Coincident> = None;
+    if xs.len() >= 2 && period > 0.0 {
+        for k in 0..SAMPLES {
+            let t = period * k as f64 / SAMPLES as f64;
+            let f: Vec<f64> = events
+                .iter()
+                .zip(entry)
+                .map(|(e, te)| match (e.analytic.as_ref(), te) {
+                    (Some(a), Some(te)) => at(&a.force_history, (t - te).rem_euclid(period)),
+                    _ => 0.0,
+                })
+                .collect();
+            if let Some((total, x)) = integrate(&xs, &f)
+                && best.as_ref().is_none_or(|b| total > b.total_n)
+            {
+                best = Some(Coincident {
+                    total_n: total,
+                    x_action_m: x,
+                    time_s: t,
+                });
+            }
+        }
+    }
+    let note = if xs.len() < 2 {
+        Some("one station assessed: a force along the bow needs at least two stations".to_string())
+    } else if peak.is_none() {
+        Some("no station slams: the total bow slamming force is zero".to_string())
+    } else {
+        None
+    };
+    Some(BowForce {
+        speed_m_per_s: first.speed_m_per_s,
+        wave: first.wave.clone(),
+        stations,
+        peak_sum_total_n: peak.map(|p| p.0),
+        peak_sum_x_action_m: peak.map(|p| p.1),
+        time_coincident: best,
+        note,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn trapezoid_total_and_point_of_action_by_hand() {
+        // f = 0, 2, 2 N/m at x = 0, 1, 2 m: F = 1 + 2 = 3 N;
+        // moment = (1/6)(0 + 1*4) + (1/6)(1*6 + 2*6) = 4/6 + 18/6 = 22/6 N m; x_F = 22/18 m
+        let (f, x) = integrate(&[2.0, 0.0, 1.0], &[2.0, 0.0, 2.0]).unwrap();
+        assert!((f - 3.0).abs() < 1e-12, "{f}");
+        assert!((x - 22.0 / 18.0).abs() < 1e-12, "{x}");
+        assert!(integrate(&[1.0], &[5.0]).is_none());
+        assert!(integrate(&[0.0, 1.0], &[0.0, 0.0]).is_none());
+    }
+
+    #[test]
+    fn history_interpolation_is_zero_outside() {
+        let h = [[0.0, 0.0], [1.0, 10.0]];
+        assert_eq!(at(&h, -0.1), 0.0);
+        assert!((at(&h, 0.25) - 2.5).abs() < 1e-12);
+        assert_eq!(at(&h, 1.5), 0.0);
+    }
+}
