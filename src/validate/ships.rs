@@ -312,16 +312,38 @@ pub fn hermundstad_assess(case: &Case, memo: &Memo) -> Result<Outcome> {
     }
     let a = assessment(case, &sea, memo)?;
     let name = case.text("sensor")?;
-    let design = a
+    let Some(design) = a
         .stations
         .iter()
         .flat_map(|s| s.design_pressure_pa.iter())
         .find(|d| d.name == name)
-        .ok_or_else(|| {
-            Error::Invalid(format!(
-                "the assessment gives no design pressure for sensor {name} (does its station emerge?)"
-            ))
-        })?;
+    else {
+        let flags: Vec<String> = a
+            .events
+            .iter()
+            .map(|e| {
+                let flag = serde_json::to_value(e.slam_flag)
+                    .ok()
+                    .and_then(|v| v.as_str().map(str::to_string))
+                    .unwrap_or_default();
+                format!(
+                    "station {} at {} m/s, {}: {flag}",
+                    e.station, e.speed_m_per_s, e.wave
+                )
+            })
+            .collect();
+        return Ok(Outcome {
+            computed: f64::NAN,
+            reference: Reference::Value { value: measured },
+            table: None,
+            figures: Vec::new(),
+            notes: vec![format!(
+                "assess gives no design pressure for sensor {name}: {}; Veen's SPH {veen} kPa and \
+                 Wagner's {wag} kPa are the published comparisons",
+                flags.join("; ")
+            )],
+        });
+    };
     let p = design.value / 1e3;
     Ok(Outcome {
         computed: p,
