@@ -12,6 +12,7 @@ pub mod case;
 pub mod compare;
 pub mod drops;
 pub mod plot;
+pub mod quoted;
 pub mod report;
 pub mod run;
 pub mod seakeeping;

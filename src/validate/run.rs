@@ -4,7 +4,7 @@
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
 
-use super::{Case, Mode, Outcome, drops, seakeeping, ships, wedges};
+use super::{Case, Mode, Outcome, drops, quoted, seakeeping, ships, wedges};
 use crate::error::{Error, Result};
 use crate::sph;
 
@@ -86,8 +86,8 @@ pub fn run(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcome> {
         "wedge-convergence" => wedges::convergence(case, mode, memo),
         "wedge-force-bounds" => wedges::force_bounds(case, mode, memo),
         "wedge-pressure-bound" => wedges::pressure_bound(case, mode, memo),
-        "breder2005-load-ratio" => wedges::breder_load_ratio(case, mode, memo),
-        "whelan2004-peak-pressure" => wedges::whelan_peak_pressure(case),
+        "breder2005-load-ratio" => quoted::breder_load_ratio(case, mode, memo),
+        "whelan2004-peak-pressure" => quoted::whelan_peak_pressure(case),
         "zhao1996-prescribed" => drops::zhao_prescribed(case, mode, memo),
         "zhao1996-drop" => drops::zhao_drop(case, mode, memo),
         "yettou2006-drop" => drops::yettou_drop(case, mode, memo),
