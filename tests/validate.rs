@@ -189,3 +189,33 @@ fn exit_status_follows_the_verdicts_and_the_summary_has_one_row_per_case() {
     assert_eq!(code, 6, "{stdout}");
     assert!(stdout.contains("FAIL"), "{stdout}");
 }
+
+/// The document outline the PDF is built from: the front table has one row per case, and every case
+/// has its own section with its verdict.
+#[test]
+fn document_outline_has_one_summary_row_and_one_section_per_case() {
+    let cases: Vec<Case> = [
+        wagner_case(0.05, None),
+        wagner_case(0.001, Some("expected")),
+    ]
+    .into_iter()
+    .enumerate()
+    .map(|(i, t)| Case::from_source(SourceText::from_string(format!("case{i}.toml"), t)).unwrap())
+    .collect();
+    let dir = tempfile::tempdir().unwrap();
+    let suite = validate::run_suite(&cases, Mode::Quick, dir.path().to_path_buf(), &mut |_| {});
+    let o = validate::document::outline(&suite, "test").unwrap();
+    let validate::document::Block::Table { rows, header, .. } = &o.blocks[0] else {
+        panic!("the first block is not the summary table");
+    };
+    assert_eq!(header.len(), 7);
+    assert_eq!(rows.len(), 2);
+    assert_eq!(rows[0][6], "pass");
+    assert_eq!(rows[1][6], "known failure");
+    let headings = o
+        .blocks
+        .iter()
+        .filter(|b| matches!(b, validate::document::Block::Heading { level: 1, .. }))
+        .count();
+    assert_eq!(headings, 2);
+}

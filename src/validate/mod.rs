@@ -10,6 +10,7 @@
 
 pub mod case;
 pub mod compare;
+pub mod document;
 pub mod drops;
 pub mod plot;
 pub mod quoted;
