@@ -12,6 +12,7 @@ pub mod case;
 pub mod compare;
 pub mod document;
 pub mod drops;
+pub mod ochi_speed;
 pub mod plot;
 pub mod quoted;
 pub mod report;

@@ -4,7 +4,7 @@
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
 
-use super::{Case, Mode, Outcome, drops, quoted, seakeeping, ships, wedges};
+use super::{Case, Mode, Outcome, drops, ochi_speed, quoted, seakeeping, ships, wedges};
 use crate::error::{Error, Result};
 use crate::sph;
 
@@ -27,6 +27,7 @@ pub const KINDS: &[&str] = &[
     "ochi-vform-period",
     "ochi1958-particulars",
     "ochi1958-trend",
+    "ochi1958-speed-trend",
     "ochi1958-pressures",
     "hermundstad2005-wagner",
     "hermundstad2005-assess",
@@ -99,6 +100,7 @@ pub fn run(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcome> {
         "ochi-vform-period" => seakeeping::ochi_period(case),
         "ochi1958-particulars" => ships::ochi_particulars(case),
         "ochi1958-trend" => ships::ochi_trend(case, mode, memo),
+        "ochi1958-speed-trend" => ochi_speed::speed_trend(case, memo),
         "ochi1958-pressures" => ships::ochi_pressures(case, memo),
         "hermundstad2005-wagner" => ships::hermundstad_wagner(case),
         "hermundstad2005-assess" => ships::hermundstad_assess(case, memo),

@@ -15,7 +15,7 @@ use crate::sea::SeaState;
 
 /// The analytic 2D+t assessment of the case's `hull` under `sea` at `loading`, written under the work
 /// folder.
-fn assessment(case: &Case, sea: &Path, memo: &Memo) -> Result<Assessment> {
+pub(super) fn assessment(case: &Case, sea: &Path, memo: &Memo) -> Result<Assessment> {
     let hull = Hull::from_file(&case.file("hull")?)?;
     let sea = SeaState::from_file(sea)?;
     let settings = Settings {
