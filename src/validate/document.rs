@@ -2,6 +2,25 @@
 //! (branch `report`): each [`Block`] here has a variant of the same name and fields there, so the PDF is
 //! `Document { title, subtitle, footer, blocks: outline(..).blocks.map(1:1) }.pdf()`.
 //!
+//! After merging `report`, the PDF is (in `cli/validate.rs`, after `report::write`):
+//!
+//! ```ignore
+//! use slamtool::report::document::{Block as B, Document};
+//! use slamtool::validate::document::{Block, outline};
+//! let o = outline(&suite, &prov.commit)?;
+//! let blocks = o.blocks.into_iter().map(|b| match b {
+//!     Block::Heading { level, text } => B::Heading { level, text },
+//!     Block::Paragraph(t) => B::Paragraph(t),
+//!     Block::Strong(t) => B::Strong(t),
+//!     Block::List(v) => B::List(v),
+//!     Block::KeyValue(v) => B::KeyValue(v),
+//!     Block::Table { caption, header, rows } => B::Table { caption, header, rows },
+//!     Block::Svg { svg, caption, width_mm } => B::Svg { svg, caption, width_mm },
+//! }).collect();
+//! let doc = Document { title: o.title, subtitle: o.subtitle, stamp: None, footer: o.footer, blocks };
+//! slamtool::files::write_atomic(&a.out.join("validation.pdf"), &doc.pdf()?)?;
+//! ```
+//!
 //! Front page: one table, one row per case (quantity, computed, reference, error, tolerance, verdict).
 //! Then one section per case: verdict, numbers, tolerance and its reason, known failure or pending data,
 //! provenance, notes, wall time, the table of numbers and the overlay plots.
