@@ -49,6 +49,8 @@ pub enum Error {
     /// The inputs are valid and the computation succeeded, but the result exceeds a design limit the user
     /// set (the CLI exits with status 4).
     DesignLimit(String),
+    /// A validation case failed its stated tolerance (`slamtool validate`; the CLI exits with status 6).
+    ValidationFailed(String),
 }
 
 impl Error {
@@ -68,6 +70,7 @@ impl fmt::Display for Error {
             Error::Numerical(m) => write!(f, "numerical failure: {m}"),
             Error::Invalid(m) => write!(f, "{m}"),
             Error::DesignLimit(m) => write!(f, "design limit exceeded: {m}"),
+            Error::ValidationFailed(m) => write!(f, "validation failed: {m}"),
         }
     }
 }

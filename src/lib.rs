@@ -37,5 +37,6 @@ pub mod report;
 pub mod sea;
 pub mod seakeeping;
 pub mod sph;
+pub mod validate;
 
 pub use error::{Error, InputError, Result};

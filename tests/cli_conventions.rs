@@ -38,6 +38,7 @@ const COMMANDS: &[&[&str]] = &[
     &["entry", "section"],
     &["entry", "case"],
     &["bench"],
+    &["validate"],
     &["completions"],
     &["man"],
 ];

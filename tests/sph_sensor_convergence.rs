@@ -28,7 +28,6 @@
 mod common;
 
 use common::sph::{WedgeRun, wedge_run};
-use slamtool::analytic::wagner_pressure::WagnerWedge;
 use slamtool::analytic::{wagner, zhao_faltinsen1993};
 use slamtool::loads::peaks::summarise;
 use slamtool::sph::SensorMethod;
@@ -46,32 +45,11 @@ fn filtered_peak(t: &[f64], x: &[f64]) -> (f64, f64) {
 }
 
 /// Like-for-like reference peak pressure coefficient of a sensor (centre `s`, width `width` along the
-/// side) on a wedge at constant speed `v`, over [0, t_end]:
-/// * 30 deg: Wagner's composite pressure distribution ([`WagnerWedge`]) averaged over the sensor width,
-///   sampled every t_end / 4000 and filtered like the SPH history;
-/// * 20 deg: the Zhao & Faltinsen (1993) similarity peak, Cp_max 17.77 (data/reference/
-///   water_entry_theory.md), times the ratio of the width-averaged, filtered Wagner peak to Wagner's point
-///   peak (the similarity distribution itself is not in the reference data, so its peak is lowered by
-///   the amount the Wagner peak of the same width is lowered).
+/// side) on a wedge at constant speed `v`, over [0, t_end], filtered like the SPH history: the function
+/// the validation cases use (`slamtool::validate::wedges::like_for_like_cp`, documented there: Wagner's
+/// composite distribution at 30 deg, the Zhao & Faltinsen similarity peak at 20 deg).
 fn like_for_like_cp(beta: f64, v: f64, s: f64, width: f64, t_end: f64) -> f64 {
-    let w = WagnerWedge {
-        beta,
-        rho: 1000.0,
-        v,
-    };
-    let q = 0.5 * 1000.0 * v * v;
-    let n = 4000;
-    let t: Vec<f64> = (0..=n).map(|k| t_end * k as f64 / n as f64).collect();
-    let (p_sensor, _) = filtered_peak(&t, &w.sensor_history(s, width, &t));
-    if (beta.to_degrees() - zhao_faltinsen1993::DEADRISE_DEG).abs() < 1e-9 {
-        let p_point = w
-            .sensor_history(s, 1e-6 * width, &t)
-            .into_iter()
-            .fold(0.0, f64::max);
-        zhao_faltinsen1993::CP_MAX * p_sensor / p_point
-    } else {
-        p_sensor / q
-    }
+    slamtool::validate::wedges::like_for_like_cp(beta, v, s, width, t_end, CUTOFF_HZ).unwrap()
 }
 
 /// Peak errors of one run: mean over its sensors of |Cp / Cp_ref - 1| against the point reference (Wagner

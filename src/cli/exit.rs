@@ -8,6 +8,7 @@
 //! | 3 | numerical failure of a run (an SPH run diverged, a solver did not converge) |
 //! | 4 | a design limit was exceeded |
 //! | 5 | an I/O error (a file cannot be read or written) |
+//! | 6 | a validation case failed its tolerance (`slamtool validate`; known failures do not count) |
 
 use slamtool::Error;
 
@@ -23,6 +24,8 @@ pub const NUMERICAL: u8 = 3;
 pub const DESIGN_LIMIT: u8 = 4;
 /// An I/O error.
 pub const IO: u8 = 5;
+/// A validation case failed (known failures excepted).
+pub const VALIDATION_FAILED: u8 = 6;
 
 /// The exit status for an error.
 pub fn code(e: &Error) -> u8 {
@@ -31,6 +34,7 @@ pub fn code(e: &Error) -> u8 {
         Error::Numerical(_) => NUMERICAL,
         Error::DesignLimit(_) => DESIGN_LIMIT,
         Error::Io { .. } => IO,
+        Error::ValidationFailed(_) => VALIDATION_FAILED,
     }
 }
 
@@ -42,7 +46,8 @@ Exit status:
   2  usage: unknown option or missing argument
   3  numerical failure of a run (an SPH run diverged, a solver did not converge)
   4  a design limit was exceeded
-  5  I/O error: a file cannot be read or written";
+  5  I/O error: a file cannot be read or written
+  6  validation: a case of `slamtool validate` failed its tolerance";
 
 #[cfg(test)]
 mod tests {
@@ -58,6 +63,10 @@ mod tests {
         assert_eq!(code(&Error::Invalid("x".into())), BAD_INPUT);
         assert_eq!(code(&Error::Numerical("x".into())), NUMERICAL);
         assert_eq!(code(&Error::DesignLimit("x".into())), DESIGN_LIMIT);
+        assert_eq!(
+            code(&Error::ValidationFailed("x".into())),
+            VALIDATION_FAILED
+        );
         assert_eq!(OK, 0);
         assert_eq!(USAGE, 2);
     }

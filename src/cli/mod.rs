@@ -22,6 +22,7 @@ mod motions;
 pub mod progress_bar;
 mod sea;
 pub mod station;
+mod validate;
 
 /// Examples at the end of `slamtool --help`, followed there by the exit statuses.
 const TOP_EXAMPLES: &str = "\
@@ -67,6 +68,9 @@ enum Command {
     /// Strip-theory motions, relative motion at the bow, slam statistics and operability.
     #[command(after_long_help = motions::EXAMPLES)]
     Motions(motions::MotionsArgs),
+    /// The validation suite against published data, with its report.
+    #[command(after_long_help = validate::EXAMPLES)]
+    Validate(validate::ValidateArgs),
     /// Print a shell completion script.
     #[command(after_long_help = completions::EXAMPLES)]
     Completions(completions::CompletionsArgs),
@@ -127,6 +131,7 @@ pub fn main() -> ExitCode {
         Command::Sea(c) => sea::run(c),
         Command::Assess(a) => assess::run(a),
         Command::Motions(a) => motions::run(a),
+        Command::Validate(a) => validate::run(a),
         Command::Completions(a) => completions::run(a, &mut command()),
         Command::Man(a) => man::run(a, command()),
     };

@@ -1,0 +1,342 @@
+//! Validation case files (`validation/<case>.toml`): what to run, the quantity compared, the tolerance
+//! with its reason, the reference files with their provenance, and an optional `known_failure` reason.
+//!
+//! ```toml
+//! title = "Zhao et al. (1996) 30 deg wedge, measured velocity imposed"
+//! kind = "zhao1996-prescribed"          # the computation (see `run::KINDS`)
+//! quantity = "peak force on the 0.2 m measuring section"
+//! unit = "N"
+//! reference_files = ["../data/reference/zhao1996_wedge30_drop.csv"]
+//! provenance = "Zhao, Faltinsen & Aarsnes (1996), Fig. 15, eye-digitised by a third party"
+//! # known_failure = "why the tolerance is not met, and why that is expected"
+//!
+//! [tolerance]
+//! kind = "relative"                     # relative | absolute | at-most | below-reference | within-range
+//! value = 0.10
+//! reason = "written before the result was seen: ..."
+//!
+//! [resolution]                          # SPH cases: particles over the half-beam
+//! quick = 25.0
+//! full = 40.0
+//!
+//! [parameters]                          # what the kind needs (numbers, strings, lists of numbers)
+//! deadrise_deg = 30.0
+//! ```
+//!
+//! Every problem is reported as `file:line:column: reason`.
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+use serde::Deserialize;
+use toml::Spanned;
+
+use super::compare::Tolerance;
+use crate::error::{Error, Result};
+use crate::input::SourceText;
+
+/// Run mode of the suite.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Mode {
+    /// Coarse resolution, for CI.
+    Quick,
+    /// Converged resolution, for the committed report.
+    Full,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawCase {
+    title: Spanned<String>,
+    kind: Spanned<String>,
+    quantity: Spanned<String>,
+    unit: String,
+    reference_files: Vec<Spanned<String>>,
+    provenance: Spanned<String>,
+    known_failure: Option<Spanned<String>>,
+    #[serde(default)]
+    notes: Vec<String>,
+    tolerance: RawTolerance,
+    resolution: Option<RawResolution>,
+    #[serde(default)]
+    parameters: BTreeMap<String, Spanned<toml::Value>>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawTolerance {
+    kind: Spanned<String>,
+    value: Option<Spanned<f64>>,
+    reason: Spanned<String>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawResolution {
+    quick: Spanned<f64>,
+    full: Spanned<f64>,
+}
+
+/// One validation case, read and checked.
+#[derive(Debug, Clone)]
+pub struct Case {
+    /// The file name without `.toml`.
+    pub name: String,
+    pub path: PathBuf,
+    pub title: String,
+    pub kind: String,
+    pub quantity: String,
+    pub unit: String,
+    /// Reference files, resolved against the case file's folder (each exists).
+    pub reference_files: Vec<PathBuf>,
+    pub provenance: String,
+    pub known_failure: Option<String>,
+    pub notes: Vec<String>,
+    pub tolerance: Tolerance,
+    pub tolerance_reason: String,
+    /// Particles over the half-beam at (quick, full).
+    pub resolution: Option<(f64, f64)>,
+    params: BTreeMap<String, Spanned<toml::Value>>,
+    src: SourceText,
+}
+
+fn non_empty(src: &SourceText, v: &Spanned<String>, what: &str) -> Result<String> {
+    if v.get_ref().trim().is_empty() {
+        return Err(Error::Input(
+            src.error(v, format!("{what} must not be empty")),
+        ));
+    }
+    Ok(v.get_ref().trim().to_string())
+}
+
+impl Case {
+    /// Read a case file from disk.
+    pub fn from_file(path: &Path) -> Result<Self> {
+        Self::from_source(SourceText::read(path)?)
+    }
+
+    /// Read a case from its text (`src.path` names it and is the base of relative paths).
+    pub fn from_source(src: SourceText) -> Result<Self> {
+        let raw: RawCase = src.parse_toml().map_err(Error::Input)?;
+        let name = src
+            .path
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        let kind = raw.kind.get_ref().clone();
+        if !super::run::KINDS.contains(&kind.as_str()) {
+            return Err(Error::Input(src.error(
+                &raw.kind,
+                format!(
+                    "unknown kind `{kind}`; one of: {}",
+                    super::run::KINDS.join(", ")
+                ),
+            )));
+        }
+        let t = &raw.tolerance;
+        let value = |what: &str| -> Result<f64> {
+            match &t.value {
+                Some(v) if v.get_ref().is_finite() && *v.get_ref() > 0.0 => Ok(*v.get_ref()),
+                Some(v) => Err(Error::Input(
+                    src.error(v, format!("the {what} tolerance must be a positive number")),
+                )),
+                None => Err(Error::Input(
+                    src.error(&t.kind, format!("a `{what}` tolerance needs `value`")),
+                )),
+            }
+        };
+        let tolerance = match t.kind.get_ref().as_str() {
+            "relative" => Tolerance::Relative {
+                value: value("relative")?,
+            },
+            "absolute" => Tolerance::Absolute {
+                value: value("absolute")?,
+            },
+            "at-most" => Tolerance::AtMost {
+                value: value("at-most")?,
+            },
+            "below-reference" => Tolerance::BelowReference,
+            "within-range" => Tolerance::WithinRange,
+            other => {
+                return Err(Error::Input(src.error(
+                    &t.kind,
+                    format!(
+                        "unknown tolerance kind `{other}`; one of: relative, absolute, at-most, \
+                         below-reference, within-range"
+                    ),
+                )));
+            }
+        };
+        let tolerance_reason = non_empty(&src, &t.reason, "the tolerance's reason")?;
+        let base = src.path.parent().unwrap_or(Path::new(".")).to_path_buf();
+        let mut reference_files = Vec::new();
+        for f in &raw.reference_files {
+            let p = base.join(f.get_ref());
+            if !p.is_file() {
+                return Err(Error::Input(
+                    src.error(f, format!("reference file {} not found", p.display())),
+                ));
+            }
+            reference_files.push(p);
+        }
+        let resolution = match &raw.resolution {
+            Some(r) => {
+                for v in [&r.quick, &r.full] {
+                    if !(v.get_ref().is_finite() && *v.get_ref() >= 4.0 && *v.get_ref() <= 400.0) {
+                        return Err(Error::Input(src.error(
+                            v,
+                            "particles over the half-beam must be between 4 and 400",
+                        )));
+                    }
+                }
+                Some((*r.quick.get_ref(), *r.full.get_ref()))
+            }
+            None => None,
+        };
+        let known_failure = match &raw.known_failure {
+            Some(k) => Some(non_empty(&src, k, "known_failure")?),
+            None => None,
+        };
+        Ok(Case {
+            name,
+            title: non_empty(&src, &raw.title, "title")?,
+            kind,
+            quantity: non_empty(&src, &raw.quantity, "quantity")?,
+            unit: raw.unit,
+            reference_files,
+            provenance: non_empty(&src, &raw.provenance, "provenance")?,
+            known_failure,
+            notes: raw.notes,
+            tolerance,
+            tolerance_reason,
+            resolution,
+            params: raw.parameters,
+            path: src.path.clone(),
+            src,
+        })
+    }
+
+    /// An error located at a parameter (or at the top of the file when it is missing).
+    fn param_error(&self, key: &str, message: String) -> Error {
+        match self.params.get(key) {
+            Some(v) => Error::Input(self.src.error(v, message)),
+            None => Error::Input(self.src.error_line(1, 1, message)),
+        }
+    }
+
+    /// A number parameter.
+    pub fn number(&self, key: &str) -> Result<f64> {
+        let v = self.params.get(key).ok_or_else(|| {
+            self.param_error(
+                key,
+                format!("kind `{}` needs `parameters.{key}` (a number)", self.kind),
+            )
+        })?;
+        let x = match v.get_ref() {
+            toml::Value::Float(x) => *x,
+            toml::Value::Integer(i) => *i as f64,
+            _ => f64::NAN,
+        };
+        if !x.is_finite() {
+            return Err(self.param_error(key, format!("`{key}` must be a finite number")));
+        }
+        Ok(x)
+    }
+
+    /// A list of numbers.
+    pub fn numbers(&self, key: &str) -> Result<Vec<f64>> {
+        let v = self.params.get(key).ok_or_else(|| {
+            self.param_error(
+                key,
+                format!(
+                    "kind `{}` needs `parameters.{key}` (a list of numbers)",
+                    self.kind
+                ),
+            )
+        })?;
+        let bad = || self.param_error(key, format!("`{key}` must be a list of numbers"));
+        let arr = v.get_ref().as_array().ok_or_else(bad)?;
+        arr.iter()
+            .map(|x| match x {
+                toml::Value::Float(x) if x.is_finite() => Ok(*x),
+                toml::Value::Integer(i) => Ok(*i as f64),
+                _ => Err(bad()),
+            })
+            .collect()
+    }
+
+    /// A text parameter.
+    pub fn text(&self, key: &str) -> Result<String> {
+        let v = self.params.get(key).ok_or_else(|| {
+            self.param_error(
+                key,
+                format!("kind `{}` needs `parameters.{key}` (text)", self.kind),
+            )
+        })?;
+        v.get_ref()
+            .as_str()
+            .map(str::to_string)
+            .ok_or_else(|| self.param_error(key, format!("`{key}` must be text")))
+    }
+
+    /// A path parameter, resolved against the case file's folder; the file must exist.
+    pub fn file(&self, key: &str) -> Result<PathBuf> {
+        let p = self
+            .path
+            .parent()
+            .unwrap_or(Path::new("."))
+            .join(self.text(key)?);
+        if !p.is_file() {
+            return Err(self.param_error(key, format!("file {} not found", p.display())));
+        }
+        Ok(p)
+    }
+
+    /// The declared reference file whose name is `file_name`.
+    pub fn reference(&self, file_name: &str) -> Result<&Path> {
+        self.reference_files
+            .iter()
+            .find(|p| p.file_name().is_some_and(|n| n == file_name))
+            .map(PathBuf::as_path)
+            .ok_or_else(|| {
+                Error::Input(self.src.error_line(
+                    1,
+                    1,
+                    format!(
+                        "kind `{}` reads {file_name}: list it in `reference_files`",
+                        self.kind
+                    ),
+                ))
+            })
+    }
+
+    /// Particles over the half-beam for the mode.
+    pub fn particles(&self, mode: Mode) -> Result<f64> {
+        match (self.resolution, mode) {
+            (Some((q, _)), Mode::Quick) => Ok(q),
+            (Some((_, f)), Mode::Full) => Ok(f),
+            (None, _) => Err(Error::Input(self.src.error_line(
+                1,
+                1,
+                format!(
+                    "kind `{}` runs SPH: it needs a [resolution] table",
+                    self.kind
+                ),
+            ))),
+        }
+    }
+}
+
+/// Every case file (`*.toml`) in a folder, in name order.
+pub fn case_files(dir: &Path) -> Result<Vec<PathBuf>> {
+    let mut out = Vec::new();
+    for e in std::fs::read_dir(dir).map_err(|e| Error::io(dir, e))? {
+        let p = e.map_err(|e| Error::io(dir, e))?.path();
+        if p.extension().is_some_and(|x| x == "toml") && p.is_file() {
+            out.push(p);
+        }
+    }
+    out.sort();
+    Ok(out)
+}

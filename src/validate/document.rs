@@ -1,0 +1,179 @@
+//! The validation report as a document outline, ready for the PDF machinery of `report::document`
+//! (branch `report`): each [`Block`] here has a variant of the same name and fields there, so the PDF is
+//! `Document { title, subtitle, footer, blocks: outline(..).blocks.map(1:1) }.pdf()`.
+//!
+//! After merging `report`, the PDF is (in `cli/validate.rs`, after `report::write`):
+//!
+//! ```ignore
+//! use slamtool::report::document::{Block as B, Document};
+//! use slamtool::validate::document::{Block, outline};
+//! let o = outline(&suite, &prov.commit)?;
+//! let blocks = o.blocks.into_iter().map(|b| match b {
+//!     Block::Heading { level, text } => B::Heading { level, text },
+//!     Block::Paragraph(t) => B::Paragraph(t),
+//!     Block::Strong(t) => B::Strong(t),
+//!     Block::List(v) => B::List(v),
+//!     Block::KeyValue(v) => B::KeyValue(v),
+//!     Block::Table { caption, header, rows } => B::Table { caption, header, rows },
+//!     Block::Svg { svg, caption, width_mm } => B::Svg { svg, caption, width_mm },
+//! }).collect();
+//! let doc = Document { title: o.title, subtitle: o.subtitle, stamp: None, footer: o.footer, blocks };
+//! slamtool::files::write_atomic(&a.out.join("validation.pdf"), &doc.pdf()?)?;
+//! ```
+//!
+//! Front page: one table, one row per case (quantity, computed, reference, error, tolerance, verdict).
+//! Then one section per case: verdict, numbers, tolerance and its reason, known failure or pending data,
+//! provenance, notes, wall time, the table of numbers and the overlay plots.
+
+use super::compare::Reference;
+use super::report::{summary_row, summary_rows};
+use super::{Mode, Suite, plot};
+use crate::error::Result;
+
+/// One element of the document (the same variants as `report::document::Block`).
+#[derive(Debug, Clone)]
+pub enum Block {
+    Heading {
+        level: u8,
+        text: String,
+    },
+    Paragraph(String),
+    Strong(String),
+    List(Vec<String>),
+    KeyValue(Vec<(String, String)>),
+    Table {
+        caption: String,
+        header: Vec<String>,
+        rows: Vec<Vec<String>>,
+    },
+    Svg {
+        svg: String,
+        caption: String,
+        width_mm: f64,
+    },
+}
+
+/// Title, subtitle lines, footer and blocks of the validation report.
+#[derive(Debug, Clone)]
+pub struct Outline {
+    pub title: String,
+    pub subtitle: Vec<String>,
+    pub footer: String,
+    pub blocks: Vec<Block>,
+}
+
+/// The outline of the report of a suite; `commit` is the tool's git commit.
+pub fn outline(s: &Suite, commit: &str) -> Result<Outline> {
+    let mode = match s.mode {
+        Mode::Quick => "quick (coarse resolution, for CI)",
+        Mode::Full => "full (converged resolution)",
+    };
+    let mut blocks = vec![Block::Table {
+        caption: "Validation summary: one row per case".into(),
+        header: [
+            "case",
+            "quantity",
+            "computed",
+            "reference",
+            "error",
+            "tolerance",
+            "verdict",
+        ]
+        .map(String::from)
+        .to_vec(),
+        rows: summary_rows(s)
+            .into_iter()
+            .map(|r| {
+                vec![
+                    r.case,
+                    r.quantity,
+                    r.computed,
+                    r.reference,
+                    r.error,
+                    r.tolerance,
+                    r.verdict,
+                ]
+            })
+            .collect(),
+    }];
+    let failed: Vec<&str> = s
+        .cases
+        .iter()
+        .filter(|c| c.verdict.is_failure())
+        .map(|c| c.name.as_str())
+        .collect();
+    blocks.push(Block::Strong(if failed.is_empty() {
+        "No case fails its tolerance (known failures and pending data are listed with their reasons)."
+            .into()
+    } else {
+        format!("Failing cases: {}.", failed.join(", "))
+    }));
+    for c in &s.cases {
+        let r = summary_row(c);
+        blocks.push(Block::Heading {
+            level: 1,
+            text: format!("{}: {}", c.name, c.title),
+        });
+        blocks.push(Block::Strong(format!("Verdict: {}", c.verdict.label())));
+        let mut kv = vec![
+            (
+                "quantity".to_string(),
+                format!("{} ({})", c.quantity, c.unit),
+            ),
+            ("computed".into(), r.computed),
+            ("reference".into(), r.reference),
+            ("error".into(), r.error),
+            ("tolerance".into(), r.tolerance),
+            ("wall time".into(), format!("{:.1} s", c.wall_time_s)),
+        ];
+        if let Some(p) = c.particles_per_half_beam {
+            kv.push(("particles over the half-beam".into(), format!("{p}")));
+        }
+        blocks.push(Block::KeyValue(kv));
+        blocks.push(Block::Paragraph(format!(
+            "Tolerance, set before the result was seen: {}",
+            c.tolerance_reason
+        )));
+        if let Some(k) = &c.known_failure {
+            blocks.push(Block::Paragraph(format!("Known failure: {k}")));
+        }
+        if let Some(Reference::Pending { reason }) = &c.reference {
+            blocks.push(Block::Paragraph(format!("Pending data: {reason}")));
+        }
+        blocks.push(Block::Paragraph(format!(
+            "Provenance: {} (files: {}).",
+            c.provenance,
+            c.reference_files.join(", ")
+        )));
+        if !c.notes.is_empty() {
+            blocks.push(Block::List(c.notes.clone()));
+        }
+        if let Some(t) = &c.table {
+            blocks.push(Block::Table {
+                caption: format!("{}: numbers", c.name),
+                header: t.header.clone(),
+                rows: t.rows.clone(),
+            });
+        }
+        for f in &c.figures {
+            blocks.push(Block::Svg {
+                svg: plot::svg(f)?,
+                caption: f.title.clone(),
+                width_mm: 160.0,
+            });
+        }
+    }
+    Ok(Outline {
+        title: "slamtool validation report".into(),
+        subtitle: vec![
+            format!(
+                "Mode: {mode}; {} cases; wall time {:.0} s",
+                s.cases.len(),
+                s.wall_time_s
+            ),
+            format!("slamtool {}, commit {commit}", env!("CARGO_PKG_VERSION")),
+        ],
+        footer: "slamtool validation report".into(),
+        blocks,
+    })
+}

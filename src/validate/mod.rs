@@ -1,0 +1,191 @@
+//! `slamtool validate`: the validation suite against published data (issue 12).
+//!
+//! Each case is data in the project: a case file in `validation/` ([`case`]) names the computation,
+//! the quantity, the reference files (copied unchanged, with their provenance, into `data/reference/`)
+//! and the tolerance with its reason, written before the result was seen. [`run`] computes each case
+//! with the library functions the tool itself uses, [`compare`] gives the verdict, and [`report`]
+//! writes the summary table (CSV, JSON, Markdown), one folder per case with its numbers, its
+//! overlay plots of computed against reference curves (SVG with a CSV twin), its provenance and wall
+//! time.
+
+pub mod case;
+pub mod compare;
+pub mod document;
+pub mod drops;
+pub mod ochi_speed;
+pub mod plot;
+pub mod quoted;
+pub mod report;
+pub mod run;
+pub mod seakeeping;
+pub mod ships;
+pub mod wedges;
+
+use std::time::Instant;
+
+use serde::Serialize;
+
+pub use case::{Case, Mode};
+pub use compare::{Reference, Tolerance, Verdict};
+
+/// One line or set of markers on a figure.
+#[derive(Debug, Clone, Serialize)]
+pub struct Series {
+    pub label: String,
+    /// Computed series are drawn as lines, reference data as markers.
+    pub reference: bool,
+    pub points: Vec<[f64; 2]>,
+}
+
+/// An overlay plot of computed and reference curves.
+#[derive(Debug, Clone, Serialize)]
+pub struct Figure {
+    /// File stem of the SVG and CSV files.
+    pub name: String,
+    pub title: String,
+    pub x_label: String,
+    pub y_label: String,
+    pub series: Vec<Series>,
+}
+
+/// A table of numbers (first row the header).
+#[derive(Debug, Clone, Default, Serialize)]
+pub struct Table {
+    pub header: Vec<String>,
+    pub rows: Vec<Vec<String>>,
+}
+
+/// What a case's computation gives.
+#[derive(Debug, Clone)]
+pub struct Outcome {
+    pub computed: f64,
+    pub reference: Reference,
+    pub table: Option<Table>,
+    pub figures: Vec<Figure>,
+    /// Findings and caveats worked out during the run (printed in the case's section).
+    pub notes: Vec<String>,
+}
+
+/// The result of one case.
+#[derive(Debug, Clone, Serialize)]
+pub struct CaseResult {
+    pub name: String,
+    pub title: String,
+    pub kind: String,
+    pub quantity: String,
+    pub unit: String,
+    pub computed: Option<f64>,
+    pub reference: Option<Reference>,
+    pub error: Option<f64>,
+    pub tolerance: Tolerance,
+    pub tolerance_reason: String,
+    pub verdict: Verdict,
+    pub known_failure: Option<String>,
+    pub provenance: String,
+    pub reference_files: Vec<String>,
+    pub notes: Vec<String>,
+    pub table: Option<Table>,
+    #[serde(skip)]
+    pub figures: Vec<Figure>,
+    pub particles_per_half_beam: Option<f64>,
+    pub wall_time_s: f64,
+}
+
+/// The whole suite.
+#[derive(Debug, Clone, Serialize)]
+pub struct Suite {
+    pub mode: Mode,
+    pub cases: Vec<CaseResult>,
+    pub wall_time_s: f64,
+}
+
+impl Suite {
+    /// Whether any case failed (a known failure does not count).
+    pub fn failed(&self) -> bool {
+        self.cases.iter().any(|c| c.verdict.is_failure())
+    }
+}
+
+/// Run one case and compare it with its reference. A computation that fails gives the verdict
+/// [`Verdict::Error`] with its message, and the other cases go on.
+pub fn run_case(case: &Case, mode: Mode, memo: &run::Memo) -> CaseResult {
+    let start = Instant::now();
+    let outcome = run::run(case, mode, memo);
+    let wall_time_s = start.elapsed().as_secs_f64();
+    let root = std::env::current_dir().unwrap_or_default();
+    let mut notes = case.notes.clone();
+    let (computed, reference, error, verdict, table, figures) = match outcome {
+        Ok(o) => {
+            notes.extend(o.notes);
+            let (error, within) = compare::assess(o.computed, &o.reference, case.tolerance);
+            let v = compare::verdict(within, case.known_failure.is_some());
+            (
+                Some(o.computed),
+                Some(o.reference),
+                error,
+                v,
+                o.table,
+                o.figures,
+            )
+        }
+        Err(e) => {
+            notes.push(format!("the computation failed: {e}"));
+            (None, None, None, Verdict::Error, None, Vec::new())
+        }
+    };
+    CaseResult {
+        name: case.name.clone(),
+        title: case.title.clone(),
+        kind: case.kind.clone(),
+        quantity: case.quantity.clone(),
+        unit: case.unit.clone(),
+        computed,
+        reference,
+        error,
+        tolerance: case.tolerance,
+        tolerance_reason: case.tolerance_reason.clone(),
+        verdict,
+        known_failure: case.known_failure.clone(),
+        provenance: case.provenance.clone(),
+        reference_files: case
+            .reference_files
+            .iter()
+            .map(|p| {
+                p.strip_prefix(&root)
+                    .unwrap_or(p)
+                    .display()
+                    .to_string()
+                    .replace("\\", "/")
+            })
+            .collect(),
+        notes,
+        table,
+        figures,
+        particles_per_half_beam: case.particles(mode).ok(),
+        wall_time_s,
+    }
+}
+
+/// Run the cases in order (each SPH run uses every core; the cases themselves run one after another,
+/// so results do not depend on the thread count). `progress` is told each case's name before it runs.
+pub fn run_suite(
+    cases: &[Case],
+    mode: Mode,
+    work: std::path::PathBuf,
+    progress: &mut dyn FnMut(&Case),
+) -> Suite {
+    let start = Instant::now();
+    let memo = run::Memo::new(work);
+    let results = cases
+        .iter()
+        .map(|c| {
+            progress(c);
+            run_case(c, mode, &memo)
+        })
+        .collect();
+    Suite {
+        mode,
+        cases: results,
+        wall_time_s: start.elapsed().as_secs_f64(),
+    }
+}

@@ -1,0 +1,226 @@
+//! The validation report: the one-table summary (one row per case: quantity, computed, reference,
+//! error, tolerance, verdict) as CSV, JSON and Markdown, and per case a folder with its numbers
+//! (`table.csv`, `case.json`) and its overlay plots (`<figure>.svg` with a `<figure>.csv` twin).
+//! [`summary_rows`] and [`markdown`] are the content a PDF document is built from.
+
+use std::path::{Path, PathBuf};
+
+use serde::Serialize;
+
+use super::compare::{self, Reference, trim};
+use super::{CaseResult, Suite, plot};
+use crate::error::Result;
+use crate::files::write_text_atomic;
+
+/// One row of the front-page table, as text.
+#[derive(Debug, Clone, Serialize)]
+pub struct SummaryRow {
+    pub case: String,
+    pub quantity: String,
+    pub computed: String,
+    pub reference: String,
+    pub error: String,
+    pub tolerance: String,
+    pub verdict: String,
+}
+
+/// The reference as text.
+pub fn reference_text(r: Option<&Reference>, unit: &str) -> String {
+    match r {
+        None => "–".into(),
+        Some(Reference::Value { value }) => format!("{} {unit}", trim(*value)),
+        Some(Reference::Range { lower, upper }) if lower == upper => {
+            format!("{} {unit}", trim(*lower))
+        }
+        Some(Reference::Range { lower, upper }) => {
+            format!("{} – {} {unit}", trim(*lower), trim(*upper))
+        }
+        Some(Reference::Pending { .. }) => "pending data".into(),
+    }
+}
+
+/// The summary row of a case.
+pub fn summary_row(c: &CaseResult) -> SummaryRow {
+    SummaryRow {
+        case: c.name.clone(),
+        quantity: format!("{} ({})", c.quantity, c.unit),
+        computed: c
+            .computed
+            .filter(|x| x.is_finite())
+            .map_or("–".into(), |x| format!("{} {}", trim(x), c.unit)),
+        reference: reference_text(c.reference.as_ref(), &c.unit),
+        error: compare::error_text(c.error, c.tolerance, &c.unit),
+        tolerance: compare::tolerance_text(c.tolerance, &c.unit),
+        verdict: c.verdict.label().into(),
+    }
+}
+
+/// One row per case.
+pub fn summary_rows(s: &Suite) -> Vec<SummaryRow> {
+    s.cases.iter().map(summary_row).collect()
+}
+
+fn csv_cell(x: &str) -> String {
+    if x.contains([',', '"', '\n']) {
+        format!("\"{}\"", x.replace('"', "\"\""))
+    } else {
+        x.to_string()
+    }
+}
+
+/// The summary table as CSV (with `#` provenance lines first).
+pub fn summary_csv(s: &Suite, header: &str) -> String {
+    let mut out = header.to_string();
+    out += "case,quantity,computed,reference,error,tolerance,verdict,wall_time_s\n";
+    for (r, c) in summary_rows(s).iter().zip(&s.cases) {
+        let cells = [
+            &r.case,
+            &r.quantity,
+            &r.computed,
+            &r.reference,
+            &r.error,
+            &r.tolerance,
+            &r.verdict,
+            &format!("{:.1}", c.wall_time_s),
+        ];
+        out += &cells.map(|x| csv_cell(x)).join(",");
+        out.push('\n');
+    }
+    out
+}
+
+fn md(x: &str) -> String {
+    x.replace('|', "\\|").replace('\n', " ")
+}
+
+/// The report as Markdown: the summary table, then one section per case (verdict, numbers, tolerance
+/// and its reason, known failure, provenance, notes, figures, wall time).
+pub fn markdown(s: &Suite) -> String {
+    let mode = match s.mode {
+        super::Mode::Quick => "quick (coarse resolution, for CI)",
+        super::Mode::Full => "full (converged resolution)",
+    };
+    let mut out = format!(
+        "# slamtool validation report\n\nMode: {mode}. Wall time {:.0} s. {} cases: {} pass, {} fail, {} known \
+         failures, {} pending data.\n\n| case | quantity | computed | reference | error | tolerance | verdict |\n\
+         |---|---|---|---|---|---|---|\n",
+        s.wall_time_s,
+        s.cases.len(),
+        count(s, &[super::Verdict::Pass, super::Verdict::UnexpectedPass]),
+        count(s, &[super::Verdict::Fail, super::Verdict::Error]),
+        count(s, &[super::Verdict::KnownFailure]),
+        count(s, &[super::Verdict::Pending]),
+    );
+    for r in summary_rows(s) {
+        out += &format!(
+            "| {} | {} | {} | {} | {} | {} | {} |\n",
+            md(&r.case),
+            md(&r.quantity),
+            md(&r.computed),
+            md(&r.reference),
+            md(&r.error),
+            md(&r.tolerance),
+            md(&r.verdict)
+        );
+    }
+    for c in &s.cases {
+        out += &format!("\n## {}: {}\n\n", c.name, c.title);
+        out += &format!("**Verdict: {}.** ", c.verdict.label());
+        let r = summary_row(c);
+        out += &format!(
+            "{}: computed {}, reference {}, error {}, tolerance {}.\n\n",
+            c.quantity, r.computed, r.reference, r.error, r.tolerance
+        );
+        out += &format!("*Tolerance:* {}\n\n", c.tolerance_reason);
+        if let Some(k) = &c.known_failure {
+            out += &format!("*Known failure:* {k}\n\n");
+        }
+        if let Some(Reference::Pending { reason }) = &c.reference {
+            out += &format!("*Pending data:* {reason}\n\n");
+        }
+        out += &format!(
+            "*Provenance:* {} (files: {}).\n\n",
+            c.provenance,
+            c.reference_files.join(", ")
+        );
+        for n in &c.notes {
+            out += &format!("- {n}\n");
+        }
+        if let Some(p) = c.particles_per_half_beam {
+            out += &format!("- {p} particles over the half-beam\n");
+        }
+        out += &format!("- wall time {:.1} s\n", c.wall_time_s);
+        for f in &c.figures {
+            out += &format!("\n![{}]({}/{}.svg)\n", md(&f.title), c.name, f.name);
+        }
+        if c.table.is_some() {
+            out += &format!("\nNumbers: [{0}/table.csv]({0}/table.csv)\n", c.name);
+        }
+    }
+    out
+}
+
+fn count(s: &Suite, v: &[super::Verdict]) -> usize {
+    s.cases.iter().filter(|c| v.contains(&c.verdict)).count()
+}
+
+/// Write the report into `dir`; returns the files written. `header` is the provenance as `#` lines.
+pub fn write(
+    s: &Suite,
+    dir: &Path,
+    header: &str,
+    provenance: &serde_json::Value,
+) -> Result<Vec<PathBuf>> {
+    std::fs::create_dir_all(dir).map_err(|e| crate::Error::io(dir, e))?;
+    let mut files = Vec::new();
+    let mut put = |p: PathBuf, text: &str| -> Result<()> {
+        write_text_atomic(&p, text)?;
+        files.push(p);
+        Ok(())
+    };
+    put(dir.join("summary.csv"), &summary_csv(s, header))?;
+    put(dir.join("summary.md"), &markdown(s))?;
+    let json = serde_json::json!({
+        "tool": format!("slamtool {}", env!("CARGO_PKG_VERSION")),
+        "provenance": provenance,
+        "mode": s.mode,
+        "wall_time_s": s.wall_time_s,
+        "failed": s.failed(),
+        "summary": summary_rows(s),
+        "cases": s.cases,
+    });
+    put(
+        dir.join("summary.json"),
+        &(serde_json::to_string_pretty(&json).unwrap_or_default() + "\n"),
+    )?;
+    for c in &s.cases {
+        let cd = dir.join(&c.name);
+        std::fs::create_dir_all(&cd).map_err(|e| crate::Error::io(&cd, e))?;
+        put(
+            cd.join("case.json"),
+            &(serde_json::to_string_pretty(c).unwrap_or_default() + "\n"),
+        )?;
+        if let Some(t) = &c.table {
+            let mut text = header.to_string();
+            text += &t.header.join(",");
+            text.push('\n');
+            for row in &t.rows {
+                text += &row
+                    .iter()
+                    .map(|x| csv_cell(x))
+                    .collect::<Vec<_>>()
+                    .join(",");
+                text.push('\n');
+            }
+            put(cd.join("table.csv"), &text)?;
+        }
+        for f in &c.figures {
+            put(cd.join(format!("{}.svg", f.name)), &plot::svg(f)?)?;
+            put(
+                cd.join(format!("{}.csv", f.name)),
+                &(header.to_string() + &plot::csv(f)),
+            )?;
+        }
+    }
+    Ok(files)
+}

@@ -1,0 +1,378 @@
+//! Ship cases through the whole 2D+t chain: the reconstructed Ochi (1958) V-form at the published test
+//! condition (particulars, trends, pressures as pending data with a drop-in file), and the Hermundstad
+//! & Moan (2005) car-carrier flare panel through `assess`, beside the measured 2.4 kPa, Veen's 3.2 kPa
+//! and Wagner's 4.2 kPa.
+
+use std::path::Path;
+
+use super::run::{Memo, csv_rows, toml_number, toml_table};
+use super::{Case, Figure, Mode, Outcome, Reference, Series, Table};
+use crate::assess::{self, Assessment, Fidelity, Settings};
+use crate::error::{Error, Result};
+use crate::hull::Hull;
+use crate::hull::Hydrostatics;
+use crate::sea::SeaState;
+
+/// The analytic 2D+t assessment of the case's `hull` under `sea` at `loading`, written under the work
+/// folder.
+pub(super) fn assessment(case: &Case, sea: &Path, memo: &Memo) -> Result<Assessment> {
+    let hull = Hull::from_file(&case.file("hull")?)?;
+    let sea = SeaState::from_file(sea)?;
+    let settings = Settings {
+        loading: Some(case.text("loading")?),
+        fidelity: Fidelity::Analytic,
+        ..Settings::default()
+    };
+    let out = memo.work_dir(&case.name);
+    let (a, _) = assess::run(&hull, &sea, &settings, &out, &Default::default())?;
+    Ok(a)
+}
+
+/// Published particulars of the Ochi model (`model` table of ochi1958_vform.toml) against the
+/// hydrostatics of the reconstruction at `loading`: the largest relative difference (%).
+pub fn ochi_particulars(case: &Case) -> Result<Outcome> {
+    let r = toml_table(case.reference("ochi1958_vform.toml")?)?;
+    let hull = Hull::from_file(&case.file("hull")?)?;
+    let h = Hydrostatics::compute(&hull, hull.loading(Some(&case.text("loading")?))?);
+    let pairs = [
+        ("displacement_kg", h.displacement_kg),
+        ("beam_m", h.beam_wl_m),
+        ("block_coefficient", h.cb),
+        ("prismatic_coefficient", h.cp),
+        ("midship_coefficient", h.cm),
+        ("waterplane_coefficient", h.cwp),
+        ("lpp_m", h.lpp_m),
+    ];
+    let mut rows = Vec::new();
+    let mut worst = 0.0f64;
+    let mut pts = Vec::new();
+    for (k, (key, got)) in pairs.iter().enumerate() {
+        let want = toml_number(&r, &["model", key])?;
+        let e = got / want - 1.0;
+        worst = worst.max(e.abs());
+        rows.push(vec![
+            key.to_string(),
+            format!("{got:.4}"),
+            format!("{want}"),
+            format!("{:+.2}", 100.0 * e),
+        ]);
+        pts.push([k as f64 + 1.0, 100.0 * e]);
+    }
+    Ok(Outcome {
+        computed: 100.0 * worst,
+        reference: Reference::Value { value: 0.0 },
+        table: Some(Table {
+            header: vec![
+                "particular".into(),
+                "reconstruction".into(),
+                "published".into(),
+                "difference_percent".into(),
+            ],
+            rows,
+        }),
+        figures: vec![Figure {
+            name: "particulars".into(),
+            title: "Ochi V-form reconstruction: particulars against Ochi (1958)".into(),
+            x_label: "particular (1 Δ, 2 B, 3 Cb, 4 Cp, 5 Cm, 6 Cwp, 7 Lpp)".into(),
+            y_label: "difference (%)".into(),
+            series: vec![Series {
+                label: "reconstruction - published".into(),
+                reference: true,
+                points: pts,
+            }],
+        }],
+        notes: vec![
+            "the hull is a reconstruction matched to these particulars (the offsets are not published)"
+                .into(),
+        ],
+    })
+}
+
+/// Ochi's published trend "the maximum slamming pressure occurs near the keel": the fraction of the
+/// instrumented stations with slamming events whose largest design pressure is on the keel sensor
+/// (the first of the station's sensors), from the 2D+t assessment at the test condition.
+pub fn ochi_trend(case: &Case, _mode: Mode, memo: &Memo) -> Result<Outcome> {
+    let a = assessment(case, &case.file("sea")?, memo)?;
+    let mut rows = Vec::new();
+    let mut series = Vec::new();
+    let (mut keel, mut counted) = (0usize, 0usize);
+    for st in &a.stations {
+        if st.design_pressure_pa.is_empty() || st.emerging_events == 0 {
+            continue;
+        }
+        counted += 1;
+        let (imax, _) =
+            st.design_pressure_pa
+                .iter()
+                .enumerate()
+                .fold(
+                    (0, f64::MIN),
+                    |b, (i, d)| if d.value > b.1 { (i, d.value) } else { b },
+                );
+        if imax == 0 {
+            keel += 1;
+        }
+        let mut pts = Vec::new();
+        for (i, d) in st.design_pressure_pa.iter().enumerate() {
+            rows.push(vec![
+                format!("{}", st.station),
+                d.name.clone(),
+                format!("{:.3}", d.value / 1e3),
+                d.source.to_string(),
+                format!("{}", d.speed_m_per_s),
+                d.wave.clone(),
+            ]);
+            pts.push([i as f64 + 1.0, d.value / 1e3]);
+        }
+        series.push(Series {
+            label: format!("station {}", st.station),
+            reference: false,
+            points: pts,
+        });
+    }
+    if counted == 0 {
+        return Err(Error::Invalid(
+            "no instrumented station emerges in this assessment: the trend cannot be checked"
+                .into(),
+        ));
+    }
+    Ok(Outcome {
+        computed: keel as f64 / counted as f64,
+        reference: Reference::Range {
+            lower: 1.0,
+            upper: 1.0,
+        },
+        table: Some(Table {
+            header: vec![
+                "station".into(),
+                "sensor".into(),
+                "design_pressure_kpa".into(),
+                "source".into(),
+                "speed_m_per_s".into(),
+                "wave".into(),
+            ],
+            rows,
+        }),
+        figures: vec![Figure {
+            name: "design_pressures".into(),
+            title: "Ochi V-form, test condition: design pressure per sensor".into(),
+            x_label: "sensor, keel (1) to chine (4)".into(),
+            y_label: "design pressure (kPa)".into(),
+            series,
+        }],
+        notes: vec![format!(
+            "{keel} of {counted} emerging stations have their largest design pressure on the keel sensor \
+             (fidelity {}); Ochi's pressures themselves are not available (ochi1958-pressures)",
+            a.fidelity
+        )],
+    })
+}
+
+/// Ochi's measured peak pressures: pending until the drop-in file (`pressures`, a CSV with the header
+/// `station,speed_m_per_s,sensor_index,peak_pressure_kpa`, sensor 1 at the keel) holds rows; then the
+/// largest relative difference (%) of the analytic design-event peaks at the same station, speed and
+/// sensor.
+pub fn ochi_pressures(case: &Case, memo: &Memo) -> Result<Outcome> {
+    let file = case.file("pressures")?;
+    let rows = csv_rows(&file)?;
+    if rows.is_empty() {
+        return Ok(Outcome {
+            computed: f64::NAN,
+            reference: Reference::Pending {
+                reason: format!(
+                    "Ochi's (1958) peak pressures were published as figures only; fill {} (one row per \
+                     station, speed and sensor: station,speed_m_per_s,sensor_index,peak_pressure_kpa, \
+                     sensor 1 at the keel) to compare",
+                    file.display()
+                ),
+            },
+            table: None,
+            figures: Vec::new(),
+            notes: Vec::new(),
+        });
+    }
+    let a = assessment(case, &case.file("sea")?, memo)?;
+    let mut out = Vec::new();
+    let mut worst = 0.0f64;
+    let mut pts = Vec::new();
+    for r in &rows {
+        if r.len() != 4 {
+            return Err(Error::Invalid(format!(
+                "{}: every row needs station,speed_m_per_s,sensor_index,peak_pressure_kpa",
+                file.display()
+            )));
+        }
+        let ev = a
+            .events
+            .iter()
+            .find(|e| (e.station - r[0]).abs() < 1e-6 && (e.speed_m_per_s - r[1]).abs() < 1e-6);
+        let got = ev
+            .and_then(|e| e.analytic.as_ref())
+            .and_then(|an| an.sensors.get((r[2] as usize).wrapping_sub(1)))
+            .map(|s| s.peak_pa / 1e3);
+        let Some(got) = got else {
+            return Err(Error::Invalid(format!(
+                "{}: no analytic event at station {}, speed {} m/s, sensor {}",
+                file.display(),
+                r[0],
+                r[1],
+                r[2]
+            )));
+        };
+        worst = worst.max((got / r[3] - 1.0).abs());
+        out.push(vec![
+            format!("{}", r[0]),
+            format!("{}", r[1]),
+            format!("{}", r[2]),
+            format!("{got:.3}"),
+            format!("{}", r[3]),
+        ]);
+        pts.push([r[3], got]);
+    }
+    Ok(Outcome {
+        computed: 100.0 * worst,
+        reference: Reference::Value { value: 0.0 },
+        table: Some(Table {
+            header: vec![
+                "station".into(),
+                "speed_m_per_s".into(),
+                "sensor_index".into(),
+                "computed_kpa".into(),
+                "measured_kpa".into(),
+            ],
+            rows: out,
+        }),
+        figures: vec![Figure {
+            name: "pressures".into(),
+            title: "Ochi (1958): computed against measured peak pressures".into(),
+            x_label: "measured (kPa)".into(),
+            y_label: "computed (kPa)".into(),
+            series: vec![Series {
+                label: "analytic 2D+t".into(),
+                reference: true,
+                points: pts,
+            }],
+        }],
+        notes: Vec::new(),
+    })
+}
+
+/// Wagner's estimate for the flare as Veen made it: a wedge of `deadrise_deg` (37) struck at
+/// `speed_m_per_s` (1.4), p = (pi^2/4) cot^2(beta) rho V^2 / 2 in kPa, against Veen's 4.2 kPa.
+pub fn hermundstad_wagner(case: &Case) -> Result<Outcome> {
+    let r = toml_table(case.reference("hermundstad2005_panel.toml")?)?;
+    let beta = toml_number(
+        &r,
+        &["reported_comparisons", "flare_equivalent_deadrise_deg"],
+    )?;
+    let v = toml_number(&r, &["reported_comparisons", "flare_impact_speed_m_s"])?;
+    let rho = case.number("water_density_kg_per_m3")?;
+    let p =
+        crate::analytic::wagner::peak_pressure_coefficient(beta.to_radians())? * 0.5 * rho * v * v;
+    let veen = toml_number(&r, &["reported_comparisons", "wagner_peak_pressure_kpa"])?;
+    let measured = toml_number(&r, &["measured", "panel_peak_pressure_kpa"])?;
+    Ok(Outcome {
+        computed: p / 1e3,
+        reference: Reference::Value { value: veen },
+        table: None,
+        figures: Vec::new(),
+        notes: vec![format!(
+            "flare as a {beta}° wedge at {v} m/s, ρ = {rho} kg/m³; the measured panel peak is {measured} kPa"
+        )],
+    })
+}
+
+/// The flare panel through `assess` (analytic 2D+t with strip-theory relative motion on the
+/// reconstructed car-carrier hull): the design pressure of the panel sensor (`sensor`) against the
+/// measured 2.4 kPa, with Veen's SPH 3.2 kPa and Wagner's 4.2 kPa beside it. Pending while the
+/// model-test sea state (`sea`) is not in the project.
+pub fn hermundstad_assess(case: &Case, memo: &Memo) -> Result<Outcome> {
+    let r = toml_table(case.reference("hermundstad2005_panel.toml")?)?;
+    let measured = toml_number(&r, &["measured", "panel_peak_pressure_kpa"])?;
+    let veen = toml_number(&r, &["reported_comparisons", "sph_peak_pressure_kpa"])?;
+    let wag = toml_number(&r, &["reported_comparisons", "wagner_peak_pressure_kpa"])?;
+    let sea = case
+        .path
+        .parent()
+        .unwrap_or(Path::new("."))
+        .join(case.text("sea")?);
+    if !sea.is_file() {
+        return Ok(Outcome {
+            computed: f64::NAN,
+            reference: Reference::Pending {
+                reason: format!(
+                    "the model-test sea state {} is not in the project yet",
+                    sea.display()
+                ),
+            },
+            table: None,
+            figures: Vec::new(),
+            notes: Vec::new(),
+        });
+    }
+    let a = assessment(case, &sea, memo)?;
+    let name = case.text("sensor")?;
+    let Some(design) = a
+        .stations
+        .iter()
+        .flat_map(|s| s.design_pressure_pa.iter())
+        .find(|d| d.name == name)
+    else {
+        let flags: Vec<String> = a
+            .events
+            .iter()
+            .map(|e| {
+                let flag = serde_json::to_value(e.slam_flag)
+                    .ok()
+                    .and_then(|v| v.as_str().map(str::to_string))
+                    .unwrap_or_default();
+                format!(
+                    "station {} at {} m/s, {}: {flag}",
+                    e.station, e.speed_m_per_s, e.wave
+                )
+            })
+            .collect();
+        return Ok(Outcome {
+            computed: f64::NAN,
+            reference: Reference::Value { value: measured },
+            table: None,
+            figures: Vec::new(),
+            notes: vec![format!(
+                "assess gives no design pressure for sensor {name}: {}; Veen's SPH {veen} kPa and \
+                 Wagner's {wag} kPa are the published comparisons",
+                flags.join("; ")
+            )],
+        });
+    };
+    let p = design.value / 1e3;
+    Ok(Outcome {
+        computed: p,
+        reference: Reference::Value { value: measured },
+        table: Some(Table {
+            header: vec!["source".into(), "panel_peak_kpa".into()],
+            rows: vec![
+                vec![
+                    format!("slamtool assess ({})", design.source),
+                    format!("{p:.3}"),
+                ],
+                vec![
+                    "measured (Hermundstad & Moan 2005)".into(),
+                    format!("{measured}"),
+                ],
+                vec![
+                    "Veen (2010) 2D SPH, measured velocity".into(),
+                    format!("{veen}"),
+                ],
+                vec![
+                    "Veen (2010) Wagner, 37° wedge at 1.4 m/s".into(),
+                    format!("{wag}"),
+                ],
+            ],
+        }),
+        figures: Vec::new(),
+        notes: vec![format!(
+            "design event: {} m/s, wave {}; the section is a reconstruction",
+            design.speed_m_per_s, design.wave
+        )],
+    })
+}

@@ -1,0 +1,221 @@
+//! `slamtool validate`: case files are checked with file:line:column errors, a tiny (analytic) case
+//! runs, the verdict logic gives the documented exit status (6 for a failure, 0 for a known failure),
+//! and the summary table has one row per case.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use slamtool::input::SourceText;
+use slamtool::validate::{self, Case, Mode, Verdict};
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// A case computing Wagner's flare pressure (analytic, milliseconds) with the given tolerance and an
+/// optional known-failure line.
+fn wagner_case(tolerance: f64, known_failure: Option<&str>) -> String {
+    let reference = root().join("data/reference/hermundstad2005_panel.toml");
+    format!(
+        r#"title = "tiny analytic case"
+kind = "hermundstad2005-wagner"
+quantity = "Wagner peak pressure"
+unit = "kPa"
+reference_files = ["{}"]
+provenance = "test"
+{}
+[tolerance]
+kind = "relative"
+value = {tolerance}
+reason = "test"
+
+[parameters]
+water_density_kg_per_m3 = 1000.0
+"#,
+        reference.display(),
+        known_failure.map_or(String::new(), |k| format!("known_failure = \"{k}\"\n"))
+    )
+}
+
+fn parse(text: &str) -> String {
+    match Case::from_source(SourceText::from_string("case.toml", text)) {
+        Ok(_) => "ok".into(),
+        Err(e) => e.to_string(),
+    }
+}
+
+#[test]
+fn bundled_case_files_parse() {
+    let files = validate::case::case_files(&root().join("validation")).unwrap();
+    assert!(files.len() >= 20, "{} case files", files.len());
+    for f in files {
+        Case::from_file(&f).unwrap_or_else(|e| panic!("{e}"));
+    }
+}
+
+#[test]
+fn bad_case_files_are_located() {
+    let good = wagner_case(0.05, None);
+    assert_eq!(parse(&good), "ok");
+    let bad_kind = good.replace("hermundstad2005-wagner", "no-such-kind");
+    assert!(
+        parse(&bad_kind).starts_with("case.toml:2:8: unknown kind `no-such-kind`"),
+        "{}",
+        parse(&bad_kind)
+    );
+    let bad_tol = good.replace("kind = \"relative\"", "kind = \"roughly\"");
+    assert!(
+        parse(&bad_tol).starts_with("case.toml:9:8: unknown tolerance kind"),
+        "{}",
+        parse(&bad_tol)
+    );
+    let no_reason = good.replace("reason = \"test\"", "reason = \" \"");
+    assert!(
+        parse(&no_reason).starts_with("case.toml:11:10:"),
+        "{}",
+        parse(&no_reason)
+    );
+    let negative = good.replace("value = 0.05", "value = -0.05");
+    assert!(
+        parse(&negative).starts_with("case.toml:10:9:"),
+        "{}",
+        parse(&negative)
+    );
+    let missing = good.replace("hermundstad2005_panel.toml", "nothing_here.toml");
+    assert!(
+        parse(&missing).contains("case.toml:5:20: reference file"),
+        "{}",
+        parse(&missing)
+    );
+    let unknown_key = good.replace("unit = \"kPa\"", "unit = \"kPa\"\ncolour = 3");
+    assert!(
+        parse(&unknown_key).starts_with("case.toml:5:1:"),
+        "{}",
+        parse(&unknown_key)
+    );
+}
+
+#[test]
+fn a_parameter_of_the_wrong_type_is_located_when_the_case_runs() {
+    let text = wagner_case(0.05, None).replace(
+        "water_density_kg_per_m3 = 1000.0",
+        "water_density_kg_per_m3 = \"fresh\"",
+    );
+    let case = Case::from_source(SourceText::from_string("case.toml", text)).unwrap();
+    let r = validate::run_case(&case, Mode::Quick, &Default::default());
+    assert_eq!(r.verdict, Verdict::Error);
+    assert!(
+        r.notes.iter().any(|n| n.contains("case.toml:14:27:")),
+        "{:?}",
+        r.notes
+    );
+}
+
+#[test]
+fn verdicts_of_a_tiny_case() {
+    let run = |tol: f64, known: Option<&str>| {
+        let case = Case::from_source(SourceText::from_string(
+            "case.toml",
+            wagner_case(tol, known),
+        ))
+        .unwrap();
+        validate::run_case(&case, Mode::Quick, &Default::default())
+    };
+    // Wagner at 37 deg and 1.4 m/s is 4.26 kPa against Veen's 4.2 kPa: +1.4 %.
+    let pass = run(0.05, None);
+    assert_eq!(pass.verdict, Verdict::Pass);
+    assert!((pass.computed.unwrap() - 4.26).abs() < 0.01);
+    assert_eq!(run(0.001, None).verdict, Verdict::Fail);
+    assert_eq!(run(0.001, Some("expected")).verdict, Verdict::KnownFailure);
+    assert_eq!(run(0.05, Some("expected")).verdict, Verdict::UnexpectedPass);
+}
+
+/// Write the cases into a folder and run the binary on them; returns (exit status, stdout, out dir).
+fn run_cli(cases: &[(&str, String)], dir: &Path) -> (i32, String, PathBuf) {
+    let cdir = dir.join("cases");
+    std::fs::create_dir_all(&cdir).unwrap();
+    for (name, text) in cases {
+        std::fs::write(cdir.join(format!("{name}.toml")), text).unwrap();
+    }
+    let out = dir.join("out");
+    let o = Command::new(env!("CARGO_BIN_EXE_slamtool"))
+        .args(["validate", "--quick", "-q", "--cases-dir"])
+        .arg(&cdir)
+        .arg("-o")
+        .arg(&out)
+        .output()
+        .unwrap();
+    (
+        o.status.code().unwrap(),
+        String::from_utf8_lossy(&o.stdout).into_owned(),
+        out,
+    )
+}
+
+#[test]
+fn exit_status_follows_the_verdicts_and_the_summary_has_one_row_per_case() {
+    let dir = tempfile::tempdir().unwrap();
+    let (code, stdout, out) = run_cli(
+        &[
+            ("a-pass", wagner_case(0.05, None)),
+            ("b-known", wagner_case(0.001, Some("expected in this test"))),
+        ],
+        dir.path(),
+    );
+    assert_eq!(code, 0, "{stdout}");
+    let csv = std::fs::read_to_string(out.join("summary.csv")).unwrap();
+    let rows: Vec<&str> = csv.lines().filter(|l| !l.starts_with('#')).collect();
+    assert_eq!(rows.len(), 3, "{csv}");
+    assert!(rows[0].starts_with("case,quantity,computed,reference,error,tolerance,verdict"));
+    assert!(rows[1].starts_with("a-pass,") && rows[1].contains(",pass,"));
+    assert!(rows[2].starts_with("b-known,") && rows[2].contains("known failure"));
+    let md = std::fs::read_to_string(out.join("summary.md")).unwrap();
+    assert_eq!(
+        md.lines()
+            .filter(|l| l.starts_with("| a-pass") || l.starts_with("| b-known"))
+            .count(),
+        2
+    );
+    assert!(out.join("a-pass/case.json").is_file());
+
+    let dir = tempfile::tempdir().unwrap();
+    let (code, stdout, _) = run_cli(
+        &[
+            ("a-pass", wagner_case(0.05, None)),
+            ("c-fail", wagner_case(0.001, None)),
+        ],
+        dir.path(),
+    );
+    assert_eq!(code, 6, "{stdout}");
+    assert!(stdout.contains("FAIL"), "{stdout}");
+}
+
+/// The document outline the PDF is built from: the front table has one row per case, and every case
+/// has its own section with its verdict.
+#[test]
+fn document_outline_has_one_summary_row_and_one_section_per_case() {
+    let cases: Vec<Case> = [
+        wagner_case(0.05, None),
+        wagner_case(0.001, Some("expected")),
+    ]
+    .into_iter()
+    .enumerate()
+    .map(|(i, t)| Case::from_source(SourceText::from_string(format!("case{i}.toml"), t)).unwrap())
+    .collect();
+    let dir = tempfile::tempdir().unwrap();
+    let suite = validate::run_suite(&cases, Mode::Quick, dir.path().to_path_buf(), &mut |_| {});
+    let o = validate::document::outline(&suite, "test").unwrap();
+    let validate::document::Block::Table { rows, header, .. } = &o.blocks[0] else {
+        panic!("the first block is not the summary table");
+    };
+    assert_eq!(header.len(), 7);
+    assert_eq!(rows.len(), 2);
+    assert_eq!(rows[0][6], "pass");
+    assert_eq!(rows[1][6], "known failure");
+    let headings = o
+        .blocks
+        .iter()
+        .filter(|b| matches!(b, validate::document::Block::Heading { level: 1, .. }))
+        .count();
+    assert_eq!(headings, 2);
+}
