@@ -239,6 +239,7 @@ pub fn run(
         "convergence_levels": s.study.levels,
         "convergence_ratio": s.study.ratio,
         "strips": s.strips,
+        "max_pressure_kpa": s.max_pressure_kpa,
         "design_value": "per sensor and station, the largest SPH raw peak over the events with an SPH run at \
                          that station, or the largest analytic (MLM) peak where none has one",
     });
@@ -286,6 +287,7 @@ pub fn run(
             .map(|q| q.name)
             .collect()
     };
-    let written = results::write(out, &a, &sensors_of)?;
+    let mut written = results::write(out, &a, &sensors_of)?;
+    written.push(results::write_motions(out, &plan.motions)?);
     Ok((a, written))
 }

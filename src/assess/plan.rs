@@ -56,6 +56,9 @@ pub struct Settings {
     pub use_cache: bool,
     /// Parallel SPH runs (None: rayon's default, one per core).
     pub threads: Option<usize>,
+    /// The design gate's limit on sensor design pressures (kPa), recorded in summary.json so that the
+    /// report states the verdict.
+    pub max_pressure_kpa: Option<f64>,
 }
 
 impl Default for Settings {
@@ -70,6 +73,7 @@ impl Default for Settings {
             strips: 31,
             use_cache: true,
             threads: None,
+            max_pressure_kpa: None,
         }
     }
 }

@@ -74,6 +74,12 @@ pub struct AssessArgs {
     /// Write into an output folder that holds files of something other than an assessment.
     #[arg(long)]
     force: bool,
+    /// Do not write the report (report.pdf, figures/) at the end; `slamtool report OUT` writes it later.
+    #[arg(long)]
+    no_report: bool,
+    /// Print today's date under the report's title (without it the PDF has no date).
+    #[arg(long)]
+    stamp: bool,
     #[command(flatten)]
     json: JsonArg,
     /// Output folder [default: reports/<hull name>/].
@@ -106,7 +112,15 @@ fn check_out(dir: &Path, force: bool) -> Result<()> {
     let Ok(entries) = std::fs::read_dir(dir) else {
         return Ok(());
     };
-    let known = ["summary.json", "pressures.csv", "cache"];
+    let known = [
+        "summary.json",
+        "pressures.csv",
+        "cache",
+        "motions.json",
+        "report.pdf",
+        "figures",
+        slamtool::report::assessment::TIMING_FILE,
+    ];
     let other = entries
         .flatten()
         .map(|e| e.file_name().to_string_lossy().into_owned())
@@ -255,9 +269,15 @@ pub fn run(a: AssessArgs) -> Result<()> {
         },
         use_cache: !a.no_cache,
         threads: a.threads,
+        max_pressure_kpa: a.max_pressure_kpa,
         ..Settings::default()
     };
     let (result, _written) = assess::run(&hull, &sea, &settings, &out, &progress_bar::handle())?;
+    let report = if a.no_report {
+        None
+    } else {
+        Some(super::report::write_report(&out, &out, a.stamp)?)
+    };
     let violations = a
         .max_pressure_kpa
         .map(|p| assess::limits::violations(&result, p * 1e3))
@@ -270,11 +290,19 @@ pub fn run(a: AssessArgs) -> Result<()> {
             serde_json::to_value(&result).map_err(|e| Error::Invalid(format!("summary: {e}")))?;
         v["outputs"] = serde_json::json!({ "folder": out.display().to_string() });
         v["limit_violations"] = serde_json::json!(violations);
+        v["report_time_s"] = serde_json::json!(report.as_ref().map(|g| g.time_s));
         global::print_json(v);
     } else {
         print!("{}", tables(&result));
         for w in &result.warnings {
             println!("{}", global::warning_line(w));
+        }
+        if let Some(g) = &report {
+            println!(
+                "\nreport written in {:.2} s: {}",
+                g.time_s,
+                out.join("report.pdf").display()
+            );
         }
         println!("\n{}", global::files_written_line(&out));
     }

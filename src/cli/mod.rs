@@ -19,6 +19,7 @@ mod hull_plot;
 mod man;
 mod motions;
 pub mod progress_bar;
+mod report;
 mod sea;
 pub mod station;
 
@@ -66,6 +67,9 @@ enum Command {
     /// Strip-theory motions, relative motion at the bow, slam statistics and operability.
     #[command(after_long_help = motions::EXAMPLES)]
     Motions(motions::MotionsArgs),
+    /// The assessment report (PDF, SVG figures with CSV twins) from the saved results of `assess`.
+    #[command(after_long_help = report::EXAMPLES)]
+    Report(report::ReportArgs),
     /// Print a shell completion script.
     #[command(after_long_help = completions::EXAMPLES)]
     Completions(completions::CompletionsArgs),
@@ -126,6 +130,7 @@ pub fn main() -> ExitCode {
         Command::Sea(c) => sea::run(c),
         Command::Assess(a) => assess::run(a),
         Command::Motions(a) => motions::run(a),
+        Command::Report(a) => report::run(a),
         Command::Completions(a) => completions::run(a, &mut command()),
         Command::Man(a) => man::run(a, command()),
     };
