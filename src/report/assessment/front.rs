@@ -115,36 +115,81 @@ pub fn verdict(e: &Value, sensor: &str) -> String {
 }
 
 /// Every warning of the assessment, deduplicated, grouped by kind.
+/// A message with its numbers blanked out: warnings that differ only in numbers are listed once.
+fn shape(msg: &str) -> String {
+    let mut out = String::new();
+    for c in msg.chars() {
+        if c.is_ascii_digit() || ((c == '.' || c == '-' || c == 'e') && out.ends_with('#')) {
+            if !out.ends_with('#') {
+                out.push('#');
+            }
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}
+
+/// Every warning of the assessment, grouped by kind; a warning repeated over events (up to its numbers)
+/// is given once, with the events it concerns.
 pub fn warnings(saved: &Saved) -> Vec<(String, Vec<String>)> {
-    let mut all: Vec<String> = list(&saved.summary, "warnings")
+    // (message, events it was raised for)
+    let mut grouped: Vec<(String, String, Vec<String>)> = Vec::new();
+    let mut add = |msg: String, event: Option<String>| {
+        let key = shape(&msg);
+        match grouped.iter_mut().find(|(k, _, _)| *k == key) {
+            Some((_, _, evs)) => evs.extend(event),
+            None => grouped.push((key, msg, event.into_iter().collect())),
+        }
+    };
+    for w in list(&saved.summary, "warnings")
         .iter()
-        .filter_map(|w| w.as_str().map(str::to_string))
-        .collect();
+        .filter_map(Value::as_str)
+    {
+        add(w.to_string(), None);
+    }
     for e in saved.events() {
         let label = format!(
-            "station {} at {} m/s in {}",
+            "{} at {} m/s ({})",
             num(e, "station").unwrap_or(f64::NAN),
             num(e, "speed_m_per_s").unwrap_or(f64::NAN),
             text(e, "wave")
         );
         if let Some(f) = e["failed"].as_str() {
-            all.push(format!("failed run, {label}: {f}"));
+            add(format!("failed run: {f}"), Some(label.clone()));
         }
         for w in list(e, "warnings").iter().filter_map(Value::as_str) {
-            all.push(format!("{label}: {w}"));
+            add(w.to_string(), Some(label.clone()));
         }
         for q in list(&e["sph"], "sensors") {
             if text(q, "convergence") == "not_converged" {
-                all.push(format!("{label}: {}", text(q, "convergence_statement")));
+                add(
+                    text(q, "convergence_statement").to_string(),
+                    Some(label.clone()),
+                );
             }
         }
     }
-    all.extend(saved.missing.iter().cloned());
-    if let Err(why) = &saved.hull {
-        all.push(format!(
-            "the hull section of this report is left out: {why}"
-        ));
+    for m in &saved.missing {
+        add(m.clone(), None);
     }
+    if let Err(why) = &saved.hull {
+        add(
+            format!("the hull section of this report is left out: {why}"),
+            None,
+        );
+    }
+    let mut all: Vec<String> = grouped
+        .into_iter()
+        .map(|(_, msg, evs)| match evs.len() {
+            0 => msg,
+            1 => format!("station {}: {msg}", evs[0]),
+            n => format!(
+                "{msg} [{n} events, station at speed: {}; the numbers quoted are those of the first]",
+                evs.join(", ")
+            ),
+        })
+        .collect();
     let mut seen = std::collections::BTreeSet::new();
     all.retain(|w| seen.insert(w.clone()));
     let kinds: [(&str, &[&str]); 5] = [
