@@ -15,8 +15,9 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use crate::error::{Error, Result};
 use crate::plot::{FONT, draw_error, register_font};
 
-/// Colours by index (colour-blind-safe set of Wong 2011, then greys); index modulo the length.
-pub const PALETTE: [RGBColor; 8] = [
+/// Colours by index (the colour-blind-safe set of Wong 2011, then grey, dark red, olive, navy); index
+/// modulo the length.
+pub const PALETTE: [RGBColor; 11] = [
     RGBColor(0, 114, 178),
     RGBColor(213, 94, 0),
     RGBColor(0, 158, 115),
@@ -25,6 +26,9 @@ pub const PALETTE: [RGBColor; 8] = [
     RGBColor(86, 180, 233),
     RGBColor(0, 0, 0),
     RGBColor(120, 120, 120),
+    RGBColor(150, 20, 20),
+    RGBColor(120, 120, 0),
+    RGBColor(20, 30, 120),
 ];
 
 /// A colour of the palette.
@@ -326,12 +330,13 @@ impl Figure {
     }
 }
 
-/// Tick label with as many decimals as the axis span needs (no long float tails).
+/// Tick label with as many decimals as the tick step needs (no long float tails). Ticks are at multiples
+/// of 1, 2 or 5 times a power of ten, at least span/7 apart, so -floor(log10(span/7)) decimals are enough.
 fn tick(v: f64, span: f64) -> String {
-    let d = if span <= 0.0 {
-        2
+    let d = if span > 0.0 {
+        (-(span / 7.0).log10().floor()).clamp(0.0, 6.0) as usize
     } else {
-        (2.0 - span.log10().floor()).clamp(0.0, 6.0) as usize
+        2
     };
     let s = format!("{v:.d$}");
     if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') {
@@ -443,8 +448,9 @@ mod tests {
 
     #[test]
     fn ticks_have_sensible_decimals() {
-        assert_eq!(tick(2.5, 10.0), "2.50");
-        assert_eq!(tick(-0.0001, 1.0), "0.000");
+        assert_eq!(tick(2.0, 10.0), "2");
+        assert_eq!(tick(2.05, 0.44), "2.05");
+        assert_eq!(tick(-0.0001, 1.0), "0.0");
         assert_eq!(tick(1500.0, 4000.0), "1500");
     }
 }

@@ -130,12 +130,31 @@ fn shape(msg: &str) -> String {
     out
 }
 
+/// An event as (station, wave, speed).
+type Ev = (String, String, String);
+
+/// Events as "station 0.093 in H0.20-L6.0 at 1.2, 1.4 m/s; station 0.133 ...".
+fn events_text(evs: &[Ev]) -> String {
+    let mut groups: Vec<(&str, &str, Vec<&str>)> = Vec::new();
+    for (st, w, u) in evs {
+        match groups.iter_mut().find(|(a, b, _)| a == st && b == w) {
+            Some((_, _, us)) => us.push(u),
+            None => groups.push((st, w, vec![u])),
+        }
+    }
+    groups
+        .iter()
+        .map(|(st, w, us)| format!("station {st} in {w} at {} m/s", us.join(", ")))
+        .collect::<Vec<_>>()
+        .join("; ")
+}
+
 /// Every warning of the assessment, grouped by kind; a warning repeated over events (up to its numbers)
 /// is given once, with the events it concerns.
 pub fn warnings(saved: &Saved) -> Vec<(String, Vec<String>)> {
     // (message, events it was raised for)
-    let mut grouped: Vec<(String, String, Vec<String>)> = Vec::new();
-    let mut add = |msg: String, event: Option<String>| {
+    let mut grouped: Vec<(String, String, Vec<Ev>)> = Vec::new();
+    let mut add = |msg: String, event: Option<Ev>| {
         let key = shape(&msg);
         match grouped.iter_mut().find(|(k, _, _)| *k == key) {
             Some((_, _, evs)) => evs.extend(event),
@@ -149,11 +168,10 @@ pub fn warnings(saved: &Saved) -> Vec<(String, Vec<String>)> {
         add(w.to_string(), None);
     }
     for e in saved.events() {
-        let label = format!(
-            "{} at {} m/s ({})",
-            num(e, "station").unwrap_or(f64::NAN),
-            num(e, "speed_m_per_s").unwrap_or(f64::NAN),
-            text(e, "wave")
+        let label = (
+            format!("{}", num(e, "station").unwrap_or(f64::NAN)),
+            text(e, "wave").to_string(),
+            format!("{}", num(e, "speed_m_per_s").unwrap_or(f64::NAN)),
         );
         if let Some(f) = e["failed"].as_str() {
             add(format!("failed run: {f}"), Some(label.clone()));
@@ -183,10 +201,10 @@ pub fn warnings(saved: &Saved) -> Vec<(String, Vec<String>)> {
         .into_iter()
         .map(|(_, msg, evs)| match evs.len() {
             0 => msg,
-            1 => format!("station {}: {msg}", evs[0]),
+            1 => format!("{}: {msg}", events_text(&evs)),
             n => format!(
-                "{msg} [{n} events, station at speed: {}; the numbers quoted are those of the first]",
-                evs.join(", ")
+                "{msg} [{n} events: {}; the numbers quoted are those of the first]",
+                events_text(&evs)
             ),
         })
         .collect();

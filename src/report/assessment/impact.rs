@@ -139,7 +139,7 @@ pub fn section(r: &mut Report, saved: &Saved) {
                 r.figure(
                     fig,
                     "Entry-velocity profile from the relative motion",
-                    130.0,
+                    150.0,
                 );
             }
             r.para(
@@ -167,7 +167,7 @@ pub fn section(r: &mut Report, saved: &Saved) {
         r.figure(
             fig,
             "Entry-velocity profile (downward, from the relative motion)",
-            125.0,
+            150.0,
         );
         let cutoff = num(setup, "filter_cutoff_hz");
         let mut fig = Figure::new(
@@ -217,7 +217,7 @@ pub fn section(r: &mut Report, saved: &Saved) {
             Mark::Line,
         ));
         fig.size = (800, 300);
-        r.figure(fig, "Vertical force per metre on the section", 135.0);
+        r.figure(fig, "Vertical force per metre on the section", 150.0);
         match &run.peak_png {
             Some(png) => {
                 let name = format!("peak_pressure_{tag}.png");

@@ -12,7 +12,7 @@ use crate::report::figure::{Figure, Mark, RefLine, Series};
 fn rao_figure(m: &Value, id: &str, title: &str, y_label: &str, key: &str) -> Figure {
     let mut f = Figure::new(id, title, "wavelength over Lpp, lambda/L (-)", y_label);
     for (k, sp) in list(m, "speeds").iter().enumerate() {
-        let pts: Vec<(f64, f64)> = list(sp, "raos")
+        let mut pts: Vec<(f64, f64)> = list(sp, "raos")
             .iter()
             .map(|r| {
                 (
@@ -21,6 +21,9 @@ fn rao_figure(m: &Value, id: &str, title: &str, y_label: &str, key: &str) -> Fig
                 )
             })
             .collect();
+        if key.ends_with("_deg") {
+            unwrap_degrees(&mut pts);
+        }
         f.series.push(Series::new(
             format!(
                 "U = {} m/s (Fn {:.3})",
@@ -34,6 +37,22 @@ fn rao_figure(m: &Value, id: &str, title: &str, y_label: &str, key: &str) -> Fig
     }
     f.size = (800, 380);
     f
+}
+
+/// Remove the 360-degree jumps of a phase curve (a phase is defined modulo 360 degrees; drawn wrapped, a
+/// phase that passes 180 degrees would show a false vertical jump).
+fn unwrap_degrees(pts: &mut [(f64, f64)]) {
+    for k in 1..pts.len() {
+        let prev = pts[k - 1].1;
+        let mut y = pts[k].1;
+        while y - prev > 180.0 {
+            y -= 360.0;
+        }
+        while y - prev < -180.0 {
+            y += 360.0;
+        }
+        pts[k].1 = y;
+    }
 }
 
 /// Relative-motion (or velocity) amplitude against speed at each station, for one regular wave.
@@ -107,8 +126,7 @@ pub fn section(r: &mut Report, saved: &Saved) {
         return;
     };
     r.para(&format!(
-        "Strip theory (Salvesen, Tuck & Faltinsen 1970), head seas, {} sections by the {} method, {} strips. {}",
-        text(m, "method"),
+        "Strip theory (Salvesen, Tuck & Faltinsen 1970), head seas, sectional hydrodynamics by the {} method, {} strips. {}",
         text(m, "method"),
         m["strip_stations"].as_u64().unwrap_or(0),
         text(m, "limitation")
@@ -154,7 +172,7 @@ pub fn section(r: &mut Report, saved: &Saved) {
         ),
         (
             "rao_heave_phase",
-            "Heave phase (lead on the crest at midship)",
+            "Heave phase (lead on the crest at midship, unwrapped)",
             "heave phase (deg)",
             "heave_phase_deg",
         ),
@@ -166,7 +184,7 @@ pub fn section(r: &mut Report, saved: &Saved) {
         ),
         (
             "rao_pitch_phase",
-            "Pitch phase (lead on the crest at midship)",
+            "Pitch phase (lead on the crest at midship, unwrapped)",
             "pitch phase (deg)",
             "pitch_phase_deg",
         ),
