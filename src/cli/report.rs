@@ -67,8 +67,14 @@ pub fn run(a: ReportArgs) -> slamtool::Result<()> {
     let g = write_report(&a.results, &out, a.stamp)?;
     if a.json.json {
         let files: Vec<String> = g.files.iter().map(|p| p.display().to_string()).collect();
+        // The provenance of the results the report was drawn from.
+        let provenance = std::fs::read_to_string(a.results.join("summary.json"))
+            .ok()
+            .and_then(|t| serde_json::from_str::<serde_json::Value>(&t).ok())
+            .map_or(serde_json::Value::Null, |v| v["provenance"].clone());
         global::print_json(serde_json::json!({
             "tool": slamtool::provenance::TOOL,
+            "provenance": provenance,
             "report_time_s": g.time_s,
             "refused_figures": g.refused,
             "warnings": g.refused,

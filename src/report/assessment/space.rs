@@ -238,6 +238,45 @@ pub fn appendix(r: &mut Report, saved: &Saved) {
         .to_vec(),
         rows,
     });
+    if let Some(m) = &saved.motions {
+        r.heading(2, "Relative motion at the stations");
+        let mut rows = Vec::new();
+        for sp in list(m, "speeds") {
+            for w in list(sp, "regular") {
+                for st in list(w, "stations") {
+                    let g = |k: &str| num(st, k).map_or("-".into(), |v| format!("{v:.4}"));
+                    rows.push(vec![
+                        format!("{}", num(st, "station").unwrap_or(f64::NAN)),
+                        format!("{}", num(sp, "speed_m_per_s").unwrap_or(f64::NAN)),
+                        text(w, "wave").to_string(),
+                        g("relative_motion_amplitude_m"),
+                        g("relative_velocity_amplitude_m_per_s"),
+                        g("draft_m"),
+                        num(&st["keel_entry"], "entry_velocity_m_per_s")
+                            .map_or("-".into(), |v| format!("{v:.4}")),
+                    ]);
+                }
+            }
+        }
+        r.push(Block::Table {
+            caption:
+                "Relative motion and velocity amplitudes, local draft and keel-entry velocity (m, \
+                      m/s) as plotted; the RAOs are in the CSV twins of their figures"
+                    .into(),
+            header: [
+                "station",
+                "speed m/s",
+                "wave",
+                "motion m",
+                "velocity m/s",
+                "draft m",
+                "entry m/s",
+            ]
+            .map(String::from)
+            .to_vec(),
+            rows,
+        });
+    }
     r.heading(2, "Settings of every SPH run");
     let mut rows = Vec::new();
     for (e, run) in saved.events().iter().zip(&saved.runs) {
