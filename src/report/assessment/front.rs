@@ -115,19 +115,21 @@ pub fn verdict(e: &Value, sensor: &str) -> String {
 }
 
 /// Every warning of the assessment, deduplicated, grouped by kind.
-/// A message with its numbers blanked out: warnings that differ only in numbers are listed once.
+/// A message with its numbers blanked out: warnings that differ only in numbers are listed once. A
+/// number is a whole word that parses as one ("0.29", "+28.8 %", "t = 0.19 s;"); names with digits
+/// ("S093-3") are kept.
 fn shape(msg: &str) -> String {
-    let mut out = String::new();
-    for c in msg.chars() {
-        if c.is_ascii_digit() || ((c == '.' || c == '-' || c == 'e') && out.ends_with('#')) {
-            if !out.ends_with('#') {
-                out.push('#');
+    msg.split_whitespace()
+        .map(|w| {
+            let core = w.trim_matches(|c: char| ",;:()[]%".contains(c));
+            if !core.is_empty() && core.parse::<f64>().is_ok() {
+                "#"
+            } else {
+                w
             }
-        } else {
-            out.push(c);
-        }
-    }
-    out
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
 }
 
 /// An event as (station, wave, speed).
@@ -138,7 +140,11 @@ fn events_text(evs: &[Ev]) -> String {
     let mut groups: Vec<(&str, &str, Vec<&str>)> = Vec::new();
     for (st, w, u) in evs {
         match groups.iter_mut().find(|(a, b, _)| a == st && b == w) {
-            Some((_, _, us)) => us.push(u),
+            Some((_, _, us)) => {
+                if !us.contains(&u.as_str()) {
+                    us.push(u);
+                }
+            }
             None => groups.push((st, w, vec![u])),
         }
     }
@@ -456,4 +462,19 @@ pub fn hull(r: &mut Report, saved: &Saved) {
         .to_vec(),
         rows,
     });
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn warnings_differing_in_numbers_only_share_a_shape_but_sensor_names_do_not() {
+        let a = shape("sensor S093-3 raw: +28.8 % change from dp 7.263 / 14.525 mm; GCI 86.3 %");
+        let b = shape("sensor S093-3 raw: -21.9 % change from dp 7.263 / 14.525 mm; GCI 65.7 %");
+        let c = shape("sensor S093-4 raw: -21.9 % change from dp 7.263 / 14.525 mm; GCI 65.7 %");
+        assert_eq!(a, b);
+        assert_ne!(b, c);
+        assert_eq!(shape("at t = 0.19 s;"), "at t = # s;");
+    }
 }
