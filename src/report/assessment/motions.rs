@@ -103,6 +103,20 @@ fn relative_figure(m: &Value, wave: &str, key: &str, what: &str, unit: &str) -> 
     f
 }
 
+/// Text with its first letter in upper case and a full stop at the end.
+fn sentence(s: &str) -> String {
+    let mut c = s.trim().chars();
+    let mut out: String = c
+        .next()
+        .map(|f| f.to_uppercase().collect())
+        .unwrap_or_default();
+    out.extend(c);
+    if !out.is_empty() && !out.ends_with('.') {
+        out.push('.');
+    }
+    out
+}
+
 pub fn slug(s: &str) -> String {
     let mut out = String::new();
     for c in s.chars() {
@@ -129,7 +143,7 @@ pub fn section(r: &mut Report, saved: &Saved) {
         "Strip theory (Salvesen, Tuck & Faltinsen 1970), head seas, sectional hydrodynamics by the {} method, {} strips. {}",
         text(m, "method"),
         m["strip_stations"].as_u64().unwrap_or(0),
-        text(m, "limitation")
+        sentence(text(m, "limitation"))
     ));
     r.push(Block::KeyValue(vec![
         (
