@@ -65,7 +65,11 @@ fn analytic_assessment_gives_every_event_and_the_tidy_table() {
         &ProgressHandle::default(),
     )
     .unwrap();
-    assert_eq!(files.len(), 3, "summary.json, pressures.csv, bow_force.csv");
+    assert_eq!(
+        files.len(),
+        4,
+        "summary.json, pressures.csv, bow_force.csv, motions.json"
+    );
     assert_eq!(a.events.len(), 4, "2 stations x 2 speeds x 1 wave");
     for e in &a.events {
         assert!(e.entry_velocity_m_per_s.is_some(), "{e:?}");

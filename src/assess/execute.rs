@@ -323,6 +323,7 @@ pub fn run(
     a.warnings.extend(unchecked);
     let sensors_of =
         |f: f64| -> Vec<String> { plan.sensors_at(f).iter().map(|q| q.name.clone()).collect() };
-    let written = results::write(out, &a, &sensors_of)?;
+    let mut written = results::write(out, &a, &sensors_of)?;
+    written.push(results::write_motions(out, &plan.motions)?);
     Ok((a, written))
 }

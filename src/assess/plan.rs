@@ -229,7 +229,9 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
             )));
         }
     }
-    let req = Request::for_sea(sea, speeds.clone(), stations.clone());
+    let mut req = Request::for_sea(sea, speeds.clone(), stations.clone());
+    // RAOs at lambda/L = 0.5, 0.6, .., 3.0 for the report (strip theory only, no water entry).
+    req.lambda_over_l = (5..=30).map(|k| f64::from(k) / 10.0).collect();
     let motions = analysis::run(&model, &req)?;
     let mut events = Vec::new();
     for sp in &motions.speeds {

@@ -371,6 +371,17 @@ pub fn write(
     Ok(vec![summary, csv, bow])
 }
 
+/// Write the strip-theory results of the plan as `motions.json` (for the report's motions section);
+/// deterministic like summary.json.
+pub fn write_motions(dir: &Path, m: &crate::seakeeping::analysis::Report) -> Result<PathBuf> {
+    let v = serde_json::to_value(m).map_err(|e| Error::Invalid(format!("motions: {e}")))?;
+    let json = serde_json::to_string_pretty(&tidy_numbers(v))
+        .map_err(|e| Error::Invalid(format!("motions: {e}")))?;
+    let path = dir.join("motions.json");
+    write_text_atomic(&path, &(json + "\n"))?;
+    Ok(path)
+}
+
 /// The tool name and version, as every summary gives it.
 pub fn tool() -> String {
     TOOL.to_string()

@@ -87,6 +87,12 @@ pub struct AssessArgs {
     /// Write into an output folder that holds files of something other than an assessment.
     #[arg(long)]
     force: bool,
+    /// Do not write the report (report.pdf, figures/) at the end; `slamtool report OUT` writes it later.
+    #[arg(long)]
+    no_report: bool,
+    /// Print today's date under the report's title (without it the PDF has no date).
+    #[arg(long)]
+    stamp: bool,
     #[command(flatten)]
     json: JsonArg,
     /// Output folder [default: reports/<hull file name without .toml>/].
@@ -115,7 +121,16 @@ fn check_out(dir: &Path, force: bool) -> Result<()> {
     let Ok(entries) = std::fs::read_dir(dir) else {
         return Ok(());
     };
-    let known = ["summary.json", "pressures.csv", "bow_force.csv", "cache"];
+    let known = [
+        "summary.json",
+        "pressures.csv",
+        "bow_force.csv",
+        "cache",
+        "motions.json",
+        "report.pdf",
+        "figures",
+        slamtool::report::assessment::TIMING_FILE,
+    ];
     let other = entries
         .flatten()
         .map(|e| e.file_name().to_string_lossy().into_owned())
@@ -191,6 +206,11 @@ pub fn run(a: AssessArgs) -> Result<()> {
         ..Settings::default()
     };
     let (result, _written) = assess::run(&hull, &sea, &settings, &out, &progress_bar::handle())?;
+    let report = if a.no_report {
+        None
+    } else {
+        Some(super::report::write_report(&out, &out, a.stamp)?)
+    };
     let violations = result.limit_violations.clone();
     if a.json.json {
         for w in &result.warnings {
@@ -199,11 +219,19 @@ pub fn run(a: AssessArgs) -> Result<()> {
         let mut v =
             serde_json::to_value(&result).map_err(|e| Error::Invalid(format!("summary: {e}")))?;
         v["outputs"] = serde_json::json!({ "folder": out.display().to_string() });
+        v["report_time_s"] = serde_json::json!(report.as_ref().map(|g| g.time_s));
         global::print_json(v);
     } else {
         print!("{}", super::assess_tables::tables(&result));
         for w in &result.warnings {
             println!("{}", global::warning_line(w));
+        }
+        if let Some(g) = &report {
+            println!(
+                "\nreport written in {:.2} s: {}",
+                g.time_s,
+                out.join("report.pdf").display()
+            );
         }
         println!("\n{}", global::files_written_line(&out));
     }

@@ -20,6 +20,7 @@ mod hull_plot;
 mod man;
 mod motions;
 pub mod progress_bar;
+mod report;
 mod sea;
 pub mod station;
 mod validate;
@@ -71,6 +72,9 @@ enum Command {
     /// The validation suite against published data, with its report.
     #[command(after_long_help = validate::EXAMPLES)]
     Validate(validate::ValidateArgs),
+    /// The assessment report (PDF, SVG figures with CSV twins) from the saved results of `assess`.
+    #[command(after_long_help = report::EXAMPLES)]
+    Report(report::ReportArgs),
     /// Print a shell completion script.
     #[command(after_long_help = completions::EXAMPLES)]
     Completions(completions::CompletionsArgs),
@@ -132,6 +136,7 @@ pub fn main() -> ExitCode {
         Command::Assess(a) => assess::run(a),
         Command::Motions(a) => motions::run(a),
         Command::Validate(a) => validate::run(a),
+        Command::Report(a) => report::run(a),
         Command::Completions(a) => completions::run(a, &mut command()),
         Command::Man(a) => man::run(a, command()),
     };

@@ -28,7 +28,7 @@ pub struct LowPass {
 impl LowPass {
     /// Design a filter of even `order` for the given cut-off and sampling frequencies.
     pub fn new(cutoff_hz: f64, sample_hz: f64, order: usize) -> Result<Self> {
-        if order == 0 || order % 2 != 0 {
+        if order == 0 || !order.is_multiple_of(2) {
             return Err(Error::Invalid(format!(
                 "filter order must be even and positive, got {order}"
             )));

@@ -1,6 +1,9 @@
 //! Reports: the results of a pipeline step written out for people (text tables) and for plots (CSV with a
 //! provenance header). The analysis modules compute; this module only formats, and the CLI only calls it.
 
+pub mod assessment;
+pub mod document;
+pub mod figure;
 pub mod motions_csv;
 pub mod motions_text;
 pub mod sanity;

@@ -24,6 +24,7 @@ pub mod neighbours;
 pub mod output;
 pub mod output_dir;
 pub mod particles;
+pub mod peak_snapshot;
 pub mod rates;
 pub mod riemann;
 pub mod sensors;
@@ -156,6 +157,11 @@ pub fn run(setup: Setup, opts: &RunOptions) -> Result<RunResult> {
         );
     };
     let mut stopped = None;
+    // The particle state at the highest sensor pressure, kept only when there is a folder to draw it in.
+    let mut peak = opts
+        .out_dir
+        .as_ref()
+        .map(|_| peak_snapshot::PeakSnapshot::default());
     loop {
         if let (Some(dt_snap), Some(dir)) = (snap, &opts.out_dir)
             && sim.time >= next_snap - 1e-12
@@ -172,7 +178,11 @@ pub fn run(setup: Setup, opts: &RunOptions) -> Result<RunResult> {
             Some(_) => next_snap.min(t_end),
             None => t_end,
         };
-        if let Err(why) = sim.run_until(stop, 50, &mut progress) {
+        let watched = match &mut peak {
+            Some(w) => sim.run_until_watching(stop, 50, &mut progress, &mut |s| w.observe(s)),
+            None => sim.run_until(stop, 50, &mut progress),
+        };
+        if let Err(why) = watched {
             stopped = Some(why);
             break;
         }
@@ -182,6 +192,9 @@ pub fn run(setup: Setup, opts: &RunOptions) -> Result<RunResult> {
     if let Some(dir) = &opts.out_dir {
         let csv = output::history_csv(&sim.history, opts.provenance.as_ref())?;
         write_text_atomic(&dir.join("history.csv"), &csv)?;
+        if let Some(w) = &peak {
+            w.write(&sim, dir)?;
+        }
     }
     let mut summary =
         summarise_run(&sim, wall.elapsed().as_secs_f64(), stopped.clone()).map_err(|e| {
@@ -229,30 +242,7 @@ fn write_snapshot(
         frames.push((sim.time, name));
     }
     if opts.png {
-        let s = &sim.setup;
-        let b = sim
-            .section()
-            .map_or(s.tank_half_width, |x| x.half_breadth());
-        let hgt = sim.section().map_or(0.2 * s.tank_depth, |x| x.height());
-        let y1 = (2.0 * b).min(s.tank_half_width);
-        let window = [-y1, y1, -(1.5 * b).min(s.tank_depth), hgt.max(0.5 * b)];
-        // Colour scale: 0.01 rho0 c0^2, the expected peak pressure the sound speed was chosen for.
-        let p_scale = 0.01 * s.rho0 * s.c0 * s.c0;
-        // The body outline where the body is now (the section's keel is at z = 0 in its own frame).
-        let outline = sim.section().map_or_else(Vec::new, |x| {
-            x.closed_contour()
-                .iter()
-                .map(|p| [p[0], p[1] + sim.body.z_keel])
-                .collect()
-        });
-        let frame = output::Frame {
-            window,
-            width: 1000,
-            p_scale,
-            mirror: s.mirror,
-            time_s: sim.time,
-            outline,
-        };
+        let frame = peak_snapshot::frame_at(sim, sim.body.z_keel, sim.time);
         output::write_png(&dir.join(format!("frame_{k:04}.png")), &sim.pt, &frame)?;
     }
     Ok(())

@@ -7,7 +7,8 @@ use std::path::Path;
 use crate::error::{Error, Result};
 
 /// Files a run writes directly in its folder.
-const RUN_FILES: [&str; 5] = [
+const RUN_FILES: [&str; 6] = [
+    "peak_pressure.png",
     "summary.json",
     "history.csv",
     "convergence.csv",

@@ -438,9 +438,21 @@ impl Simulation {
         every: u64,
         progress: &mut dyn FnMut(&Simulation),
     ) -> std::result::Result<(), String> {
+        self.run_until_watching(t_stop, every, progress, &mut |_| {})
+    }
+
+    /// [`Simulation::run_until`], with `watch` called after every step (e.g. to keep the state at a peak).
+    pub fn run_until_watching(
+        &mut self,
+        t_stop: f64,
+        every: u64,
+        progress: &mut dyn FnMut(&Simulation),
+        watch: &mut dyn FnMut(&Simulation),
+    ) -> std::result::Result<(), String> {
         while self.time < t_stop - 1e-12 {
             self.step()?;
-            if every > 0 && self.steps % every == 0 {
+            watch(self);
+            if every > 0 && self.steps.is_multiple_of(every) {
                 progress(self);
             }
         }

@@ -1,0 +1,223 @@
+//! The saved results an assessment report is drawn from: `summary.json`, `motions.json`, the hull file
+//! named in the provenance (checked against its SHA-256), and each SPH run folder (`cache/<key>/`:
+//! `summary.json` with the run's settings, `history.csv`, `peak_pressure.png`). Nothing is recomputed
+//! except the hull's hydrostatics and body plan, which are geometry, from the very file assessed.
+
+use std::path::{Path, PathBuf};
+
+use serde_json::Value;
+use sha2::{Digest, Sha256};
+
+use crate::error::{Error, Result};
+use crate::hull::Hull;
+
+/// A number field of a JSON object.
+pub fn num(v: &Value, key: &str) -> Option<f64> {
+    v.get(key).and_then(Value::as_f64)
+}
+
+/// A text field of a JSON object ("" when absent).
+pub fn text<'a>(v: &'a Value, key: &str) -> &'a str {
+    v.get(key).and_then(Value::as_str).unwrap_or("")
+}
+
+/// An array field of a JSON object (empty when absent).
+pub fn list<'a>(v: &'a Value, key: &str) -> &'a [Value] {
+    v.get(key)
+        .and_then(Value::as_array)
+        .map_or(&[][..], Vec::as_slice)
+}
+
+/// One SPH run folder as saved.
+#[derive(Debug, Clone)]
+pub struct Run {
+    pub folder: PathBuf,
+    /// The run's own summary.json (settings under `setup`).
+    pub summary: Value,
+    /// Columns of history.csv by name.
+    pub columns: Vec<(String, Vec<f64>)>,
+    pub peak_png: Option<Vec<u8>>,
+}
+
+impl Run {
+    pub fn column(&self, name: &str) -> Option<&[f64]> {
+        self.columns
+            .iter()
+            .find(|(n, _)| n == name)
+            .map(|(_, c)| c.as_slice())
+    }
+}
+
+/// Everything the report draws from.
+#[derive(Debug)]
+pub struct Saved {
+    pub dir: PathBuf,
+    pub summary: Value,
+    /// Strip-theory results (`motions.json`), when this assessment saved them.
+    pub motions: Option<Value>,
+    /// The hull, when its file is where the provenance says and unchanged.
+    pub hull: std::result::Result<Hull, String>,
+    /// Run folders by event index (None: no SPH run, or the folder is missing).
+    pub runs: Vec<Option<Run>>,
+    /// Why a run folder named in summary.json could not be read.
+    pub missing: Vec<String>,
+}
+
+fn read_json(path: &Path) -> Result<Value> {
+    let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
+    serde_json::from_str(&text).map_err(|e| {
+        Error::Invalid(format!(
+            "{}:{}:{}: not a valid results file: {e}",
+            path.display(),
+            e.line(),
+            e.column()
+        ))
+    })
+}
+
+fn sha256_of(path: &Path) -> std::io::Result<String> {
+    let bytes = std::fs::read(path)?;
+    Ok(format!("{:x}", Sha256::digest(&bytes)))
+}
+
+fn load_hull(summary: &Value) -> std::result::Result<Hull, String> {
+    let inputs = list(&summary["provenance"], "inputs");
+    let first = inputs.first().ok_or("summary.json names no input files")?;
+    let path = PathBuf::from(text(first, "path"));
+    let sha = sha256_of(&path).map_err(|e| format!("hull file {}: {e}", path.display()))?;
+    if sha != text(first, "sha256") {
+        return Err(format!(
+            "hull file {} has changed since the assessment (SHA-256 differs)",
+            path.display()
+        ));
+    }
+    Hull::from_file(&path).map_err(|e| e.to_string())
+}
+
+fn read_history(path: &Path) -> Result<Vec<(String, Vec<f64>)>> {
+    let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
+    let mut r = csv::ReaderBuilder::new()
+        .comment(Some(b'#'))
+        .from_reader(text.as_bytes());
+    let header: Vec<String> = r
+        .headers()
+        .map_err(|e| Error::Invalid(format!("{}: {e}", path.display())))?
+        .iter()
+        .map(str::to_string)
+        .collect();
+    let mut cols: Vec<Vec<f64>> = vec![Vec::new(); header.len()];
+    for (i, rec) in r.records().enumerate() {
+        let rec = rec.map_err(|e| Error::Invalid(format!("{}: {e}", path.display())))?;
+        for (j, field) in rec.iter().enumerate().take(header.len()) {
+            let v: f64 = field.trim().parse().map_err(|_| {
+                Error::Invalid(format!(
+                    "{}: record {} column '{}': '{field}' is not a number",
+                    path.display(),
+                    i + 1,
+                    header[j]
+                ))
+            })?;
+            cols[j].push(v);
+        }
+    }
+    Ok(header.into_iter().zip(cols).collect())
+}
+
+fn load_run(dir: &Path) -> Result<Run> {
+    let summary = read_json(&dir.join("summary.json"))?;
+    let columns = read_history(&dir.join("history.csv"))?;
+    let peak_png = std::fs::read(dir.join(crate::sph::peak_snapshot::FILE)).ok();
+    Ok(Run {
+        folder: dir.to_path_buf(),
+        summary,
+        columns,
+        peak_png,
+    })
+}
+
+impl Saved {
+    /// Read the results in `dir` (the output folder of `slamtool assess`).
+    pub fn load(dir: &Path) -> Result<Self> {
+        let path = dir.join("summary.json");
+        if !path.is_file() {
+            return Err(Error::Invalid(format!(
+                "{} holds no summary.json: give the output folder of `slamtool assess`",
+                dir.display()
+            )));
+        }
+        let summary = read_json(&path)?;
+        if summary.get("events").and_then(Value::as_array).is_none() {
+            return Err(Error::Invalid(format!(
+                "{}: not the summary of an assessment (no 'events' list)",
+                path.display()
+            )));
+        }
+        let motions = read_json(&dir.join("motions.json")).ok();
+        let hull = load_hull(&summary);
+        let mut runs = Vec::new();
+        let mut missing = Vec::new();
+        for e in list(&summary, "events") {
+            let folder = text(e, "run_folder");
+            if folder.is_empty() {
+                runs.push(None);
+                continue;
+            }
+            match load_run(&dir.join(folder)) {
+                Ok(r) => runs.push(Some(r)),
+                Err(err) => {
+                    missing.push(format!("run folder {folder}: {err}"));
+                    runs.push(None);
+                }
+            }
+        }
+        Ok(Self {
+            dir: dir.to_path_buf(),
+            summary,
+            motions,
+            hull,
+            runs,
+            missing,
+        })
+    }
+
+    pub fn events(&self) -> &[Value] {
+        list(&self.summary, "events")
+    }
+
+    pub fn stations(&self) -> &[Value] {
+        list(&self.summary, "stations")
+    }
+
+    /// Sensor names at a station, in the order of the estimates (the colour index of each sensor).
+    pub fn sensors_at(&self, station: f64) -> Vec<String> {
+        let mut names: Vec<String> = Vec::new();
+        for e in self.events().iter().filter(|e| at(e, station)) {
+            for s in list(&e["analytic"], "sensors")
+                .iter()
+                .chain(list(&e["sph"], "sensors"))
+            {
+                let n = text(s, "name").to_string();
+                if !names.contains(&n) {
+                    names.push(n);
+                }
+            }
+        }
+        names
+    }
+
+    /// Girth of a sensor from the keel (m), from the hull file.
+    pub fn girth(&self, name: &str) -> Option<f64> {
+        self.hull
+            .as_ref()
+            .ok()?
+            .sensors
+            .iter()
+            .find(|s| s.name == name)
+            .map(|s| s.girth)
+    }
+}
+
+/// Whether an event is at `station` (fraction of Lpp aft of the FP).
+pub fn at(e: &Value, station: f64) -> bool {
+    num(e, "station").is_some_and(|s| (s - station).abs() < 1e-9)
+}

@@ -1,0 +1,496 @@
+//! Title block, summary page and hull section of the assessment report.
+
+use serde_json::Value;
+
+use super::Report;
+use super::data::{Saved, at, list, num, text};
+use crate::report::document::Block;
+
+pub fn kpa(v: Option<f64>) -> String {
+    v.map_or("-".into(), |p| format!("{:.2}", p / 1e3))
+}
+
+fn speeds(saved: &Saved) -> Vec<f64> {
+    list(&saved.summary["settings"], "speeds_m_per_s")
+        .iter()
+        .filter_map(Value::as_f64)
+        .collect()
+}
+
+fn waves(saved: &Saved) -> Vec<String> {
+    let mut w: Vec<String> = Vec::new();
+    for e in saved.events() {
+        let n = text(e, "wave").to_string();
+        if !w.contains(&n) {
+            w.push(n);
+        }
+    }
+    w
+}
+
+pub fn title(r: &mut Report, saved: &Saved, stamp: Option<String>) {
+    let s = &saved.summary;
+    r.doc.title = format!("Slamming assessment: {}", text(s, "hull"));
+    r.doc.footer = format!("{} · {}", text(s, "hull"), text(s, "tool"));
+    r.doc.stamp = stamp;
+    let sp: Vec<String> = speeds(saved).iter().map(|v| format!("{v}")).collect();
+    r.doc.subtitle = vec![
+        "2D+t method (Veen 2010): strip theory, relative motion, 2D water entry per station"
+            .to_string(),
+        format!(
+            "Loading condition: {}   ·   fidelity: {}",
+            text(s, "loading"),
+            text(s, "fidelity")
+        ),
+    ];
+    let mut kv = vec![
+        ("Hull".to_string(), text(s, "hull").to_string()),
+        ("Loading condition".into(), text(s, "loading").into()),
+        ("Regular waves".into(), waves(saved).join(", ")),
+        ("Irregular seas".into(), irregular_names(saved).join(", ")),
+        ("Speeds (m/s)".into(), sp.join(", ")),
+        (
+            "Stations (fraction of Lpp aft of FP)".into(),
+            saved
+                .stations()
+                .iter()
+                .map(|st| format!("{}", num(st, "station").unwrap_or(f64::NAN)))
+                .collect::<Vec<_>>()
+                .join(", "),
+        ),
+        ("Fidelity".into(), text(s, "fidelity").into()),
+        (
+            "SPH resolution".into(),
+            format!(
+                "{} ({} convergence level(s))",
+                saved.summary["settings"]["resolution"]
+                    .as_str()
+                    .unwrap_or("default"),
+                saved.summary["settings"]["convergence_levels"]
+                    .as_u64()
+                    .unwrap_or(0)
+            ),
+        ),
+        ("Tool".into(), text(s, "tool").into()),
+        ("Commit".into(), text(&s["provenance"], "commit").into()),
+    ];
+    if kv[3].1.is_empty() {
+        kv[3].1 = "none".into();
+    }
+    r.push(Block::KeyValue(kv));
+    let rows: Vec<Vec<String>> = list(&s["provenance"], "inputs")
+        .iter()
+        .map(|i| vec![text(i, "path").to_string(), text(i, "sha256").to_string()])
+        .collect();
+    r.push(Block::Table {
+        caption: "Input files and their SHA-256".into(),
+        header: vec!["file".into(), "SHA-256".into()],
+        rows,
+    });
+    r.para(
+        "Pressures are gauge pressures in kPa; stations are fractions of Lpp aft of the forward \
+         perpendicular; x is measured from midship, positive forward. Every figure is also in the folder \
+         figures/ beside this PDF as SVG, with a CSV file of its plotted numbers.",
+    );
+}
+
+fn irregular_names(saved: &Saved) -> Vec<String> {
+    let mut w: Vec<String> = Vec::new();
+    for ir in list(&saved.summary, "irregular") {
+        let n = text(ir, "sea").to_string();
+        if !w.contains(&n) {
+            w.push(n);
+        }
+    }
+    w
+}
+
+/// The verdict of an SPH sensor peak in an event ("" when no SPH run).
+pub fn verdict(e: &Value, sensor: &str) -> String {
+    list(&e["sph"], "sensors")
+        .iter()
+        .find(|q| text(q, "name") == sensor)
+        .map(|q| text(q, "convergence").replace('_', " "))
+        .unwrap_or_default()
+}
+
+/// Every warning of the assessment, deduplicated, grouped by kind.
+/// A message with its numbers blanked out: warnings that differ only in numbers are listed once. A
+/// number is a whole word that parses as one ("0.29", "+28.8 %", "t = 0.19 s;"); names with digits
+/// ("S093-3") are kept.
+fn shape(msg: &str) -> String {
+    msg.split_whitespace()
+        .map(|w| {
+            let core = w.trim_matches(|c: char| ",;:()[]%".contains(c));
+            if !core.is_empty() && core.parse::<f64>().is_ok() {
+                "#"
+            } else {
+                w
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// An event as (station, wave, speed).
+type Ev = (String, String, String);
+
+/// Events as "station 0.093 in H0.20-L6.0 at 1.2, 1.4 m/s; station 0.133 ...".
+fn events_text(evs: &[Ev]) -> String {
+    let mut groups: Vec<(&str, &str, Vec<&str>)> = Vec::new();
+    for (st, w, u) in evs {
+        match groups.iter_mut().find(|(a, b, _)| a == st && b == w) {
+            Some((_, _, us)) => {
+                if !us.contains(&u.as_str()) {
+                    us.push(u);
+                }
+            }
+            None => groups.push((st, w, vec![u])),
+        }
+    }
+    groups
+        .iter()
+        .map(|(st, w, us)| format!("station {st} in {w} at {} m/s", us.join(", ")))
+        .collect::<Vec<_>>()
+        .join("; ")
+}
+
+/// Every warning of the assessment, grouped by kind; a warning repeated over events (up to its numbers)
+/// is given once, with the events it concerns.
+pub fn warnings(saved: &Saved) -> Vec<(String, Vec<String>)> {
+    // (message, events it was raised for)
+    let mut grouped: Vec<(String, String, Vec<Ev>)> = Vec::new();
+    let mut add = |msg: String, event: Option<Ev>| {
+        let key = shape(&msg);
+        match grouped.iter_mut().find(|(k, _, _)| *k == key) {
+            Some((_, _, evs)) => evs.extend(event),
+            None => grouped.push((key, msg, event.into_iter().collect())),
+        }
+    };
+    for w in list(&saved.summary, "warnings")
+        .iter()
+        .filter_map(Value::as_str)
+    {
+        add(w.to_string(), None);
+    }
+    for e in saved.events() {
+        let label = (
+            format!("{}", num(e, "station").unwrap_or(f64::NAN)),
+            text(e, "wave").to_string(),
+            format!("{}", num(e, "speed_m_per_s").unwrap_or(f64::NAN)),
+        );
+        if let Some(f) = e["failed"].as_str() {
+            add(format!("failed run: {f}"), Some(label.clone()));
+        }
+        for w in list(e, "warnings").iter().filter_map(Value::as_str) {
+            add(w.to_string(), Some(label.clone()));
+        }
+        for q in list(&e["sph"], "sensors") {
+            if text(q, "convergence") == "not_converged" {
+                add(
+                    text(q, "convergence_statement").to_string(),
+                    Some(label.clone()),
+                );
+            }
+        }
+    }
+    for m in &saved.missing {
+        add(m.clone(), None);
+    }
+    if let Err(why) = &saved.hull {
+        add(
+            format!("the hull section of this report is left out: {why}"),
+            None,
+        );
+    }
+    let mut all: Vec<String> = grouped
+        .into_iter()
+        .map(|(_, msg, evs)| match evs.len() {
+            0 => msg,
+            1 => format!("{}: {msg}", events_text(&evs)),
+            n => format!(
+                "{msg} [{n} events: {}; the numbers quoted are those of the first]",
+                events_text(&evs)
+            ),
+        })
+        .collect();
+    let mut seen = std::collections::BTreeSet::new();
+    all.retain(|w| seen.insert(w.clone()));
+    let kinds: [(&str, &[&str]); 5] = [
+        ("Failed runs", &["failed", "stopped early"]),
+        (
+            "Air cushion / low deadrise",
+            &["air", "cushion", "single-phase", "deadrise"],
+        ),
+        (
+            "Resolution and convergence",
+            &[
+                "converged",
+                "resolution",
+                "narrower",
+                "spacing",
+                "under-resolved",
+            ],
+        ),
+        ("Analytic estimates", &["analytic", "wagner"]),
+        ("Other", &[""]),
+    ];
+    let mut out: Vec<(String, Vec<String>)> = Vec::new();
+    for w in all {
+        let l = w.to_lowercase();
+        let k = kinds
+            .iter()
+            .position(|(_, keys)| keys.iter().any(|key| l.contains(key)))
+            .unwrap_or(kinds.len() - 1);
+        match out.iter_mut().find(|(n, _)| n == kinds[k].0) {
+            Some((_, v)) => v.push(w),
+            None => out.push((kinds[k].0.to_string(), vec![w])),
+        }
+    }
+    out.sort_by_key(|(n, _)| kinds.iter().position(|(k, _)| k == n));
+    out
+}
+
+pub fn summary(r: &mut Report, saved: &Saved) {
+    r.heading(1, "Summary");
+    let s = &saved.summary;
+    let mut rows = Vec::new();
+    for st in saved.stations() {
+        let f = num(st, "station").unwrap_or(f64::NAN);
+        for d in list(st, "design_pressure_pa") {
+            let sensor = text(d, "name");
+            let ev = saved.events().iter().find(|e| {
+                at(e, f)
+                    && num(e, "speed_m_per_s") == num(d, "speed_m_per_s")
+                    && text(e, "wave") == text(d, "wave")
+            });
+            rows.push(vec![
+                format!("{f}"),
+                sensor.to_string(),
+                kpa(num(d, "value")),
+                text(d, "source").to_string(),
+                format!("{}", num(d, "speed_m_per_s").unwrap_or(f64::NAN)),
+                text(d, "wave").to_string(),
+                ev.map(|e| verdict(e, sensor)).unwrap_or_default(),
+            ]);
+        }
+    }
+    r.para(&format!(
+        "Design pressure per station and sensor: the largest peak over the events ({}). Ochi's slam \
+         threshold velocity is {:.3} m/s.",
+        text(&s["settings"], "design_value"),
+        num(s, "slam_threshold_velocity_m_per_s").unwrap_or(f64::NAN)
+    ));
+    r.push(Block::Table {
+        caption: "Design pressure per station and sensor, with the governing event".into(),
+        header: [
+            "station",
+            "sensor",
+            "design kPa",
+            "source",
+            "speed m/s",
+            "wave",
+            "convergence",
+        ]
+        .map(String::from)
+        .to_vec(),
+        rows,
+    });
+    let rows: Vec<Vec<String>> = saved
+        .stations()
+        .iter()
+        .map(|st| {
+            let fp = &st["section_force_peak_n_per_m"];
+            vec![
+                format!("{}", num(st, "station").unwrap_or(f64::NAN)),
+                format!("{:.3}", num(st, "x_m").unwrap_or(f64::NAN)),
+                format!(
+                    "{} / {}",
+                    st["slamming_events"].as_u64().unwrap_or(0),
+                    st["emerging_events"].as_u64().unwrap_or(0)
+                ),
+                num(fp, "value").map_or("-".into(), |v| format!("{v:.1}")),
+                text(fp, "source").to_string(),
+                num(fp, "speed_m_per_s").map_or("-".into(), |v| format!("{v}")),
+                text(fp, "wave").to_string(),
+            ]
+        })
+        .collect();
+    r.push(Block::Table {
+        caption:
+            "Governing event per station: section force peak (N/m), events that slam by Ochi's \
+                  criterion / events whose keel emerges"
+                .into(),
+        header: [
+            "station",
+            "x m",
+            "slam / emerge",
+            "force N/m",
+            "source",
+            "speed m/s",
+            "wave",
+        ]
+        .map(String::from)
+        .to_vec(),
+        rows,
+    });
+    r.heading(2, "Limit checks");
+    let limits = list(s, "limits");
+    if limits.is_empty() {
+        r.para(
+            "No design-pressure limit was given for this assessment (slamtool assess \
+             --max-pressure-kpa P, or a [limits] table in the hull file), so no verdict is stated.",
+        );
+    } else {
+        let rows = limits
+            .iter()
+            .map(|l| {
+                let scope = match &l["scope"] {
+                    serde_json::Value::String(a) if a == "all" => "every sensor".to_string(),
+                    v => match (v["station"].as_f64(), v["sensor"].as_str()) {
+                        (Some(f), _) => format!("station {f}"),
+                        (_, Some(n)) => format!("sensor {n}"),
+                        _ => v.to_string(),
+                    },
+                };
+                vec![
+                    scope,
+                    kpa(num(l, "pressure_pa")),
+                    l["origin"].as_str().unwrap_or("").to_string(),
+                ]
+            })
+            .collect();
+        r.push(Block::Table {
+            caption: "Design-pressure limits checked".into(),
+            header: ["applies to", "limit kPa", "given by"].map(String::from).to_vec(),
+            rows,
+        });
+        let over: Vec<String> = list(s, "limit_violations")
+            .iter()
+            .filter_map(|v| v.as_str().map(String::from))
+            .collect();
+        if over.is_empty() {
+            r.push(Block::Strong(
+                "PASS: every checked sensor design pressure is within its limits.".into(),
+            ));
+        } else {
+            r.push(Block::Strong(format!(
+                "FAIL: {} limit violation(s).",
+                over.len()
+            )));
+            r.push(Block::List(over));
+        }
+    }
+    let failed = s["failed_runs"].as_u64().unwrap_or(0);
+    r.para(&format!(
+        "Runs that failed: {failed}. Events: {}.",
+        saved.events().len()
+    ));
+    r.heading(2, "Warnings");
+    let w = warnings(saved);
+    if w.is_empty() {
+        r.para("No warnings.");
+    }
+    for (kind, items) in w {
+        r.heading(3, &format!("{kind} ({})", items.len()));
+        r.push(Block::List(items));
+    }
+}
+
+pub fn hull(r: &mut Report, saved: &Saved) {
+    r.heading(1, "Hull");
+    let hull = match &saved.hull {
+        Ok(h) => h,
+        Err(why) => {
+            r.para(&format!("The hull is not shown: {why}."));
+            return;
+        }
+    };
+    match crate::hull::body_plan::body_plan_svg(hull) {
+        Ok(svg) => r.push(Block::Svg {
+            svg,
+            caption:
+                "Body plan: aft body left, fore body right, waterline of each loading, sensors \
+                      marked and named"
+                    .into(),
+            width_mm: 165.0,
+        }),
+        Err(e) => r.para(&format!("The body plan could not be drawn: {e}")),
+    }
+    let loading = text(&saved.summary, "loading");
+    if let Ok(l) = hull.loading(Some(loading)) {
+        let h = crate::hull::Hydrostatics::compute(hull, l);
+        let kv = vec![
+            ("Lpp".to_string(), format!("{:.4} m", h.lpp_m)),
+            ("Depth".into(), format!("{:.4} m", hull.depth)),
+            ("Waterline beam B".into(), format!("{:.4} m", h.beam_wl_m)),
+            ("Mean draft T".into(), format!("{:.4} m", h.mean_draft_m)),
+            (
+                "Trim by stern".into(),
+                format!("{:.4} m", h.trim_by_stern_m),
+            ),
+            ("Volume".into(), format!("{:.6} m3", h.volume)),
+            (
+                "Displacement".into(),
+                crate::report::mass_text(h.displacement_kg),
+            ),
+            ("LCB (from midship, +fwd)".into(), format!("{:.4} m", h.lcb)),
+            ("KB".into(), format!("{:.4} m", h.kb)),
+            (
+                "GM_T / GM_L".into(),
+                format!("{:.4} / {:.3} m", h.gm_t, h.gm_l),
+            ),
+            (
+                "CB / CP / CM / CWP".into(),
+                format!("{:.4} / {:.4} / {:.4} / {:.4}", h.cb, h.cp, h.cm, h.cwp),
+            ),
+        ];
+        r.heading(2, &format!("Main particulars ({loading})"));
+        r.push(Block::KeyValue(kv));
+    }
+    let rows: Vec<Vec<String>> = hull
+        .sensors
+        .iter()
+        .map(|s| {
+            vec![
+                s.name.clone(),
+                format!("{:.4}", hull.aft_of_fp(s.x)),
+                format!("{:.4}", s.x),
+                format!("{:.4}", s.girth),
+                format!("{:.4}", s.position[0]),
+                format!("{:.4}", s.position[1]),
+                format!("{:.1}", s.diameter * 1e3),
+            ]
+        })
+        .collect();
+    r.push(Block::Table {
+        caption: "Pressure sensors".into(),
+        header: [
+            "sensor",
+            "station",
+            "x m",
+            "girth m",
+            "y m",
+            "z m",
+            "diameter mm",
+        ]
+        .map(String::from)
+        .to_vec(),
+        rows,
+    });
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn warnings_differing_in_numbers_only_share_a_shape_but_sensor_names_do_not() {
+        let a = shape("sensor S093-3 raw: +28.8 % change from dp 7.263 / 14.525 mm; GCI 86.3 %");
+        let b = shape("sensor S093-3 raw: -21.9 % change from dp 7.263 / 14.525 mm; GCI 65.7 %");
+        let c = shape("sensor S093-4 raw: -21.9 % change from dp 7.263 / 14.525 mm; GCI 65.7 %");
+        assert_eq!(a, b);
+        assert_ne!(b, c);
+        assert_eq!(shape("at t = 0.19 s;"), "at t = # s;");
+    }
+}

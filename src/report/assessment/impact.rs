@@ -1,0 +1,240 @@
+//! Impact per station: the governing event's entry-velocity profile, each sensor's pressure history
+//! (raw, and low-pass filtered where the run had a cut-off), the section force history, and the
+//! particles coloured by pressure at the instant of the highest sensor pressure.
+
+use serde_json::Value;
+
+use super::Report;
+use super::data::{Run, Saved, at, list, num, text};
+use super::motions::slug;
+use crate::report::document::Block;
+use crate::report::figure::{Figure, Mark, Series};
+
+/// The governing event at a station: the SPH event with the highest sensor peak, else the event with
+/// the highest analytic sensor peak. Returns its index.
+pub fn governing(saved: &Saved, station: f64) -> Option<usize> {
+    let peak = |e: &Value, part: &str, key: &str| {
+        list(&e[part], "sensors")
+            .iter()
+            .filter_map(|q| num(q, key))
+            .fold(f64::NEG_INFINITY, f64::max)
+    };
+    let evs: Vec<usize> = (0..saved.events().len())
+        .filter(|&i| at(&saved.events()[i], station))
+        .collect();
+    let with_run: Vec<usize> = evs
+        .iter()
+        .copied()
+        .filter(|&i| saved.runs[i].is_some())
+        .collect();
+    if !with_run.is_empty() {
+        return with_run.into_iter().max_by(|&a, &b| {
+            let (ea, eb) = (&saved.events()[a], &saved.events()[b]);
+            peak(ea, "sph", "raw_peak_pa").total_cmp(&peak(eb, "sph", "raw_peak_pa"))
+        });
+    }
+    evs.into_iter()
+        .filter(|&i| !saved.events()[i]["analytic"].is_null())
+        .max_by(|&a, &b| {
+            let (ea, eb) = (&saved.events()[a], &saved.events()[b]);
+            peak(ea, "analytic", "peak_pa").total_cmp(&peak(eb, "analytic", "peak_pa"))
+        })
+}
+
+/// Keel-entry profile from the strip-theory results (for events without an SPH run).
+fn profile_from_motions(saved: &Saved, e: &Value) -> Option<Vec<(f64, f64)>> {
+    let m = saved.motions.as_ref()?;
+    let sp = list(m, "speeds")
+        .iter()
+        .find(|s| num(s, "speed_m_per_s") == num(e, "speed_m_per_s"))?;
+    let w = list(sp, "regular")
+        .iter()
+        .find(|w| text(w, "wave") == text(e, "wave"))?;
+    let st = list(w, "stations")
+        .iter()
+        .find(|s| num(s, "station").is_some_and(|x| at(e, x)))?;
+    let pts = list(&st["keel_entry"], "samples")
+        .iter()
+        .map(|q| {
+            (
+                num(q, "time_since_entry_s").unwrap_or(f64::NAN) * 1e3,
+                num(q, "velocity_m_per_s").unwrap_or(f64::NAN),
+            )
+        })
+        .collect::<Vec<_>>();
+    (!pts.is_empty()).then_some(pts)
+}
+
+fn series_of(run: &Run, col: &str, scale: f64) -> Vec<(f64, f64)> {
+    match (run.column("time_s"), run.column(col)) {
+        (Some(t), Some(x)) => t
+            .iter()
+            .zip(x)
+            .map(|(&t, &x)| (t * 1e3, x * scale))
+            .collect(),
+        _ => Vec::new(),
+    }
+}
+
+fn filtered(run: &Run, col: &str, cutoff_hz: f64) -> Option<Vec<(f64, f64)>> {
+    let t = run.column("time_s")?;
+    let x = run.column(col)?;
+    if t.len() < 3 {
+        return None;
+    }
+    let dt = (t[t.len() - 1] - t[0]) / (t.len() - 1) as f64;
+    let lp = crate::loads::LowPass::new(cutoff_hz, 1.0 / dt, 2).ok()?;
+    let (tu, xu) = crate::loads::resample_uniform(t, x, dt);
+    let y = lp.filtfilt(&xu);
+    Some(
+        tu.iter()
+            .zip(y)
+            .map(|(&t, y)| (t * 1e3, y * 1e-3))
+            .collect(),
+    )
+}
+
+pub fn section(r: &mut Report, saved: &Saved) {
+    r.heading(1, "Impact per station");
+    r.para(
+        "For each station, the governing event: the one with an SPH run and the highest sensor peak, or, \
+         where no SPH run was made, the one with the highest analytic sensor peak. Time is counted from \
+         keel entry.",
+    );
+    for st in saved.stations() {
+        let f = num(st, "station").unwrap_or(f64::NAN);
+        let sensors = saved.sensors_at(f);
+        r.heading(
+            2,
+            &format!(
+                "Station {f} (x = {:.3} m)",
+                num(st, "x_m").unwrap_or(f64::NAN)
+            ),
+        );
+        let Some(i) = governing(saved, f) else {
+            r.para("No event at this station has a keel entry: nothing to show.");
+            continue;
+        };
+        let e = &saved.events()[i];
+        let tag = format!("{}_{}", f, slug(text(e, "wave")));
+        r.para(&format!(
+            "Governing event: {} m/s in wave {}, entry velocity {:.3} m/s ({}).",
+            num(e, "speed_m_per_s").unwrap_or(f64::NAN),
+            text(e, "wave"),
+            num(e, "entry_velocity_m_per_s").unwrap_or(f64::NAN),
+            text(e, "slam_flag").replace('-', " ")
+        ));
+        let Some(run) = &saved.runs[i] else {
+            if let Some(pts) = profile_from_motions(saved, e) {
+                let mut fig = Figure::new(
+                    &format!("entry_velocity_{tag}"),
+                    &format!("Entry-velocity profile, station {f}"),
+                    "time since keel entry (ms)",
+                    "downward velocity (m/s)",
+                );
+                fig.series
+                    .push(Series::new("strip theory v(t)", pts, 0, Mark::Line));
+                fig.y_from_zero = true;
+                fig.size = (800, 300);
+                r.figure(
+                    fig,
+                    "Entry-velocity profile from the relative motion",
+                    150.0,
+                );
+            }
+            r.para(
+                "No SPH run was made for this event (analytic fidelity, or not the governing event of a \
+                 screening): there are no pressure or force histories, only the analytic peaks of the \
+                 design-space section.",
+            );
+            continue;
+        };
+        let setup = &run.summary["setup"];
+        let mut fig = Figure::new(
+            &format!("entry_velocity_{tag}"),
+            &format!("Entry-velocity profile, station {f}"),
+            "time since keel entry (ms)",
+            "downward velocity (m/s)",
+        );
+        fig.series.push(Series::new(
+            "v(t) driving the SPH run",
+            series_of(run, "downward_velocity_m_per_s", 1.0),
+            0,
+            Mark::Line,
+        ));
+        fig.y_from_zero = true;
+        fig.size = (800, 280);
+        r.figure(
+            fig,
+            "Entry-velocity profile (downward, from the relative motion)",
+            150.0,
+        );
+        let cutoff = num(setup, "filter_cutoff_hz");
+        let mut fig = Figure::new(
+            &format!("pressure_history_{tag}"),
+            &format!("Sensor pressures, station {f}"),
+            "time since keel entry (ms)",
+            "pressure (kPa)",
+        );
+        for (k, n) in sensors.iter().enumerate() {
+            let col = format!("{n}_pa");
+            fig.series.push(Series::new(
+                format!("{n} raw"),
+                series_of(run, &col, 1e-3),
+                k,
+                Mark::ThinLine,
+            ));
+            if let Some(fc) = cutoff
+                && let Some(pts) = filtered(run, &col, fc)
+            {
+                fig.series
+                    .push(Series::new(format!("{n} filtered"), pts, k, Mark::Line));
+            }
+        }
+        fig.size = (800, 400);
+        let filt = match cutoff {
+            Some(fc) => format!(
+                "thin lines raw, thick lines low-pass filtered (2nd-order Butterworth forward and back, \
+                 cut-off {fc} Hz)"
+            ),
+            None => {
+                "raw histories; the run had no low-pass cut-off (filter_cutoff_hz not set), so no \
+                     filtered history is shown"
+                    .into()
+            }
+        };
+        r.figure(fig, &format!("Sensor pressure histories: {filt}"), 160.0);
+        let mut fig = Figure::new(
+            &format!("section_force_{tag}"),
+            &format!("Vertical section force, station {f}"),
+            "time since keel entry (ms)",
+            "section force (kN/m)",
+        );
+        fig.series.push(Series::new(
+            "SPH section force",
+            series_of(run, "vertical_force_n_per_m", 1e-3),
+            0,
+            Mark::Line,
+        ));
+        fig.size = (800, 300);
+        r.figure(fig, "Vertical force per metre on the section", 150.0);
+        match &run.peak_png {
+            Some(png) => {
+                let name = format!("peak_pressure_{tag}.png");
+                r.pngs.push((name.clone(), png.clone()));
+                r.push(Block::Png {
+                    png: png.clone(),
+                    caption: format!(
+                        "Particles coloured by pressure at the instant of the highest sensor pressure \
+                         after the contact transient [figures/{name}]"
+                    ),
+                    width_mm: 140.0,
+                });
+            }
+            None => r.para(
+                "No particle snapshot at peak pressure was saved with this run (runs cached before this \
+                 version do not have one; run with --no-cache to make it).",
+            ),
+        }
+    }
+}

@@ -1,0 +1,367 @@
+//! Results across the design space (peak pressure against speed and along the girth, the analytic
+//! estimate beside every SPH peak, the convergence verdict as the marker), the comparison with
+//! published data (the optional `comparisons` list of summary.json) and the appendix (every plotted
+//! number of these figures, the settings of every run).
+
+use serde_json::Value;
+
+use super::Report;
+use super::data::{Saved, at, list, num, text};
+use super::front::kpa;
+use crate::report::document::Block;
+use crate::report::figure::{Figure, Mark, Series};
+
+/// Marker of an SPH peak by its convergence verdict, and the legend text.
+pub fn verdict_mark(v: &str) -> (Mark, &'static str) {
+    match v {
+        "converged" => (Mark::Dot, "SPH, converged (GCI <= 5 %)"),
+        "acceptable" => (Mark::Ring, "SPH, acceptable (GCI <= 20 %)"),
+        "not_converged" => (Mark::Cross, "SPH, not converged"),
+        _ => (Mark::Square, "SPH, convergence not assessed"),
+    }
+}
+
+fn sensor_value(e: &Value, part: &str, name: &str, key: &str) -> Option<f64> {
+    list(&e[part], "sensors")
+        .iter()
+        .find(|q| text(q, "name") == name)
+        .and_then(|q| num(q, key))
+}
+
+/// Points of one kind of marker: legend text, marker, points.
+type Marked = (String, Mark, Vec<(f64, f64)>);
+
+/// SPH series of one sensor, split by verdict: (legend, mark, points).
+fn sph_points(evs: &[&Value], name: &str, x: &dyn Fn(&Value) -> f64) -> Vec<Marked> {
+    let mut out: Vec<Marked> = Vec::new();
+    for e in evs {
+        let Some(q) = list(&e["sph"], "sensors")
+            .iter()
+            .find(|q| text(q, "name") == name)
+        else {
+            continue;
+        };
+        let (m, label) = verdict_mark(text(q, "convergence"));
+        let p = (x(e), num(q, "raw_peak_pa").unwrap_or(f64::NAN) * 1e-3);
+        match out.iter_mut().find(|(l, _, _)| l == label) {
+            Some((_, _, v)) => v.push(p),
+            None => out.push((label.to_string(), m, vec![p])),
+        }
+    }
+    out
+}
+
+pub fn design_space(r: &mut Report, saved: &Saved) {
+    r.heading(1, "Results across the design space");
+    r.para(
+        "Peak pressure per sensor against speed (the largest over the regular waves at each speed) and \
+         along the girth. Lines with dots: the analytic estimate (modified Logvinovich, generalised Wagner \
+         wetting) of every emerging event; markers: SPH peaks after the contact transient, their shape the \
+         convergence verdict of the peak (legend). Colours are those of the sensors throughout the report.",
+    );
+    for st in saved.stations() {
+        let f = num(st, "station").unwrap_or(f64::NAN);
+        let sensors = saved.sensors_at(f);
+        let evs: Vec<&Value> = saved.events().iter().filter(|e| at(e, f)).collect();
+        let mut fig = Figure::new(
+            &format!("peak_pressure_vs_speed_{f}"),
+            &format!("Peak pressure against speed, station {f}"),
+            "speed U (m/s)",
+            "peak pressure (kPa)",
+        );
+        for (k, n) in sensors.iter().enumerate() {
+            let mut speeds: Vec<f64> = evs.iter().filter_map(|e| num(e, "speed_m_per_s")).collect();
+            speeds.sort_by(f64::total_cmp);
+            speeds.dedup();
+            let pts: Vec<(f64, f64)> = speeds
+                .iter()
+                .filter_map(|&u| {
+                    evs.iter()
+                        .filter(|e| num(e, "speed_m_per_s") == Some(u))
+                        .filter_map(|e| sensor_value(e, "analytic", n, "peak_pa"))
+                        .reduce(f64::max)
+                        .map(|p| (u, p * 1e-3))
+                })
+                .collect();
+            if !pts.is_empty() {
+                fig.series
+                    .push(Series::new(format!("{n} analytic"), pts, k, Mark::LineDots));
+            }
+            for (label, m, pts) in
+                sph_points(&evs, n, &|e| num(e, "speed_m_per_s").unwrap_or(f64::NAN))
+            {
+                fig.series
+                    .push(Series::new(format!("{n} {label}"), pts, k, m));
+            }
+        }
+        fig.y_from_zero = true;
+        fig.size = (800, 420);
+        if fig.series.is_empty() {
+            r.para(&format!(
+                "Station {f}: no event emerges, so there is no peak pressure to plot."
+            ));
+            continue;
+        }
+        r.figure(
+            fig,
+            &format!("Peak pressure against speed at station {f}"),
+            160.0,
+        );
+        // Along the girth: the governing event of the station.
+        if let Some(i) = super::impact::governing(saved, f) {
+            let e = &saved.events()[i];
+            let mut fig = Figure::new(
+                &format!("peak_pressure_along_girth_{f}"),
+                &format!(
+                    "Peak pressure along the girth, station {f}, {} m/s, {}",
+                    num(e, "speed_m_per_s").unwrap_or(f64::NAN),
+                    text(e, "wave")
+                ),
+                "girth from the keel (m)",
+                "peak pressure (kPa)",
+            );
+            let an: Vec<(f64, f64)> = sensors
+                .iter()
+                .filter_map(|n| {
+                    Some((
+                        saved.girth(n)?,
+                        sensor_value(e, "analytic", n, "peak_pa")? * 1e-3,
+                    ))
+                })
+                .collect();
+            if !an.is_empty() {
+                fig.series
+                    .push(Series::new("analytic", an, 7, Mark::LineDots));
+            }
+            let one = [e];
+            for (k, n) in sensors.iter().enumerate() {
+                let Some(g) = saved.girth(n) else { continue };
+                for (label, m, pts) in sph_points(&one, n, &|_| g) {
+                    fig.series
+                        .push(Series::new(format!("{n} {label}"), pts, k, m));
+                }
+            }
+            fig.y_from_zero = true;
+            fig.size = (800, 380);
+            if !fig.series.is_empty() {
+                r.figure(
+                    fig,
+                    &format!("Peak pressure along the girth at station {f} (governing event)"),
+                    150.0,
+                );
+            } else if saved.hull.is_err() {
+                r.para("The girth positions of the sensors come from the hull file, which is not available.");
+            }
+        }
+    }
+}
+
+pub fn comparison(r: &mut Report, saved: &Saved) {
+    r.heading(1, "Comparison with published data");
+    let cmp = list(&saved.summary, "comparisons");
+    let trends = list(&saved.summary, "trend_checks");
+    if cmp.is_empty() && trends.is_empty() {
+        r.para(
+            "This assessment's summary holds no comparisons with published data (summary.json \
+             'comparisons'): the case does not match a published experiment the tool knows, or the \
+             assessment was made by a version that did not compare. Nothing is compared here.",
+        );
+        return;
+    }
+    let case = text(&saved.summary, "reference_case");
+    if !case.is_empty() {
+        r.para(&format!(
+            "Reference case: {case} (data/reference/validation.toml, matched by hull and sea-state name)."
+        ));
+    }
+    let show = |c: &Value, k: &str| match &c[k] {
+        Value::Null => "-".to_string(),
+        Value::Number(n) => n.as_f64().map_or("-".into(), |v| format!("{v:.4}")),
+        Value::String(s) => s.clone(),
+        other => other.to_string(),
+    };
+    if !cmp.is_empty() {
+        let rows: Vec<Vec<String>> = cmp
+            .iter()
+            .map(|c| {
+                vec![
+                    show(c, "quantity"),
+                    show(c, "computed"),
+                    show(c, "reference"),
+                    show(c, "unit"),
+                    show(c, "source"),
+                    show(c, "note"),
+                ]
+            })
+            .collect();
+        r.push(Block::Table {
+            caption: "Computed values beside published ones, with the source of each ('-': not \
+                      computed, the note says why)"
+                .into(),
+            header: ["quantity", "computed", "reference", "unit", "source", "note"]
+                .map(String::from)
+                .to_vec(),
+            rows,
+        });
+    }
+    if !trends.is_empty() {
+        let rows: Vec<Vec<String>> = trends
+            .iter()
+            .map(|c| {
+                vec![
+                    show(c, "check"),
+                    show(c, "verdict"),
+                    show(c, "detail"),
+                    show(c, "source"),
+                ]
+            })
+            .collect();
+        r.push(Block::Table {
+            caption: "Published trends and whether this assessment reproduces them".into(),
+            header: ["trend", "verdict", "numbers", "source"]
+                .map(String::from)
+                .to_vec(),
+            rows,
+        });
+    }
+    let notes: Vec<String> = list(&saved.summary, "validation_notes")
+        .iter()
+        .filter_map(|v| v.as_str().map(String::from))
+        .collect();
+    if !notes.is_empty() {
+        r.push(Block::List(notes));
+    }
+}
+
+pub fn appendix(r: &mut Report, saved: &Saved) {
+    r.heading(1, "Appendix");
+    r.heading(2, "Peak pressures of every event");
+    let mut rows = Vec::new();
+    for e in saved.events() {
+        let f = num(e, "station").unwrap_or(f64::NAN);
+        for n in saved.sensors_at(f) {
+            rows.push(vec![
+                format!("{f}"),
+                format!("{}", num(e, "speed_m_per_s").unwrap_or(f64::NAN)),
+                text(e, "wave").to_string(),
+                n.clone(),
+                num(e, "entry_velocity_m_per_s").map_or("-".into(), |v| format!("{v:.3}")),
+                kpa(sensor_value(e, "analytic", &n, "peak_pa")),
+                kpa(sensor_value(e, "sph", &n, "raw_peak_pa")),
+                kpa(sensor_value(e, "sph", &n, "filtered_peak_pa")),
+                super::front::verdict(e, &n),
+            ]);
+        }
+    }
+    r.push(Block::Table {
+        caption: "Every event and sensor: analytic and SPH peaks (kPa) as plotted".into(),
+        header: [
+            "station",
+            "speed m/s",
+            "wave",
+            "sensor",
+            "v entry m/s",
+            "analytic",
+            "SPH raw",
+            "SPH filt.",
+            "convergence",
+        ]
+        .map(String::from)
+        .to_vec(),
+        rows,
+    });
+    if let Some(m) = &saved.motions {
+        r.heading(2, "Relative motion at the stations");
+        let mut rows = Vec::new();
+        for sp in list(m, "speeds") {
+            for w in list(sp, "regular") {
+                for st in list(w, "stations") {
+                    let g = |k: &str| num(st, k).map_or("-".into(), |v| format!("{v:.4}"));
+                    rows.push(vec![
+                        format!("{}", num(st, "station").unwrap_or(f64::NAN)),
+                        format!("{}", num(sp, "speed_m_per_s").unwrap_or(f64::NAN)),
+                        text(w, "wave").to_string(),
+                        g("relative_motion_amplitude_m"),
+                        g("relative_velocity_amplitude_m_per_s"),
+                        g("draft_m"),
+                        num(&st["keel_entry"], "entry_velocity_m_per_s")
+                            .map_or("-".into(), |v| format!("{v:.4}")),
+                    ]);
+                }
+            }
+        }
+        r.push(Block::Table {
+            caption:
+                "Relative motion and velocity amplitudes, local draft and keel-entry velocity (m, \
+                      m/s) as plotted; the RAOs are in the CSV twins of their figures"
+                    .into(),
+            header: [
+                "station",
+                "speed m/s",
+                "wave",
+                "motion m",
+                "velocity m/s",
+                "draft m",
+                "entry m/s",
+            ]
+            .map(String::from)
+            .to_vec(),
+            rows,
+        });
+    }
+    r.heading(2, "Settings of every SPH run");
+    let mut rows = Vec::new();
+    for (e, run) in saved.events().iter().zip(&saved.runs) {
+        let Some(run) = run else { continue };
+        let s = &run.summary;
+        let st = &s["setup"];
+        let g = |v: Option<f64>, d: usize| v.map_or("-".into(), |x| format!("{x:.d$}"));
+        rows.push(vec![
+            format!("{}", num(e, "station").unwrap_or(f64::NAN)),
+            format!("{}", num(e, "speed_m_per_s").unwrap_or(f64::NAN)),
+            text(e, "wave").to_string(),
+            g(num(s, "dp_m").map(|x| x * 1e3), 3),
+            g(num(s, "c0_m_per_s"), 2),
+            format!(
+                "{} x {}",
+                g(num(st, "tank_half_width_m"), 3),
+                g(num(st, "tank_depth_m"), 3)
+            ),
+            g(num(s, "t_end_s").map(|x| x * 1e3), 1),
+            s["fluid_particles"]
+                .as_u64()
+                .map_or("-".into(), |v| v.to_string()),
+            s["steps"].as_u64().map_or("-".into(), |v| v.to_string()),
+            g(num(st, "filter_cutoff_hz"), 0),
+        ]);
+    }
+    if rows.is_empty() {
+        r.para("No SPH run was made in this assessment.");
+    } else {
+        r.push(Block::Table {
+            caption:
+                "SPH runs: particle spacing dp (mm), sound speed c0 (m/s), tank half-width x depth \
+                      (m), end time (ms), water particles, time steps, filter cut-off (Hz)"
+                    .into(),
+            header: [
+                "station",
+                "speed m/s",
+                "wave",
+                "dp mm",
+                "c0 m/s",
+                "tank m",
+                "t_end ms",
+                "particles",
+                "steps",
+                "cut-off Hz",
+            ]
+            .map(String::from)
+            .to_vec(),
+            rows,
+        });
+    }
+    r.para(
+        "Histories (pressure, force, velocity) are plotted from the run folders named in summary.json \
+         (cache/<key>/history.csv); every plotted number of every figure is in its CSV twin in figures/.",
+    );
+}
