@@ -297,7 +297,8 @@ impl Mlm {
         self.hist.states.iter().map(|s| self.force(s)).collect()
     }
 
-    /// History of the mean pressure over the sensor panel [s1, s2] (arc length from the keel).
+    /// History of the mean pressure over the sensor panel [s1, s2] (arc length from the keel), by the
+    /// direct quadrature of [`Mlm::sensor_mean`] (for many panels, [`Mlm::sensor_histories`] is faster).
     pub fn sensor_history(&self, s1: f64, s2: f64) -> Vec<f64> {
         self.hist
             .states
@@ -306,6 +307,9 @@ impl Mlm {
             .collect()
     }
 }
+
+#[path = "mlm_panels.rs"]
+mod panels;
 
 #[cfg(test)]
 #[path = "logvinovich_mlm_tests.rs"]

@@ -184,3 +184,62 @@ fn bulb_and_keel_bar_are_finite() {
         assert!(m.sensor_mean(&s, 0.0, 0.5).is_finite());
     }
 }
+
+/// Composite Simpson rule on `n` (even) intervals of [a, b]: a brute-force reference.
+fn simpson(a: f64, b: f64, n: usize, f: impl Fn(f64) -> f64) -> f64 {
+    let h = (b - a) / n as f64;
+    let inner: f64 = (1..n)
+        .map(|k| (if k % 2 == 1 { 4.0 } else { 2.0 }) * f(a + k as f64 * h))
+        .sum();
+    (f(a) + inner + f(b)) * h / 3.0
+}
+
+/// The panel means of [`Mlm::sensor_means`] (one cumulative integral along the arc) equal the direct
+/// per-panel quadrature of [`Mlm::sensor_mean`] and a brute-force Simpson rule of the pressure along the
+/// arc, on contiguous 5 %-of-girth panels of a wedge and of a flat keel with a chine and a vertical side,
+/// in the MLM and the acoustic stage.
+#[test]
+fn panel_means_from_the_cumulative_integral_equal_direct_quadrature() {
+    let sections: [&[[f64; 2]]; 2] = [
+        &wedge(20.0),
+        &[[0.0, 0.0], [0.1, 0.0], [0.25, 0.15], [0.25, 0.3]],
+    ];
+    for half in sections {
+        let t = times(200, 1e-4);
+        let m = Mlm::new(half, &t, &vec![5.0; t.len()], 1000.0).unwrap();
+        let girth = m.contour.last().unwrap()[2];
+        let panels: Vec<(f64, f64)> = (0..20)
+            .map(|k| (0.05 * k as f64 * girth, 0.05 * (k + 1) as f64 * girth))
+            .collect();
+        let states = &m.history().states;
+        let mut checked = 0;
+        for s in states.iter().step_by(states.len() / 7) {
+            let fast = m.sensor_means(s, &panels);
+            let p_max = m.peak(s).1;
+            for (&(a, b), &pf) in panels.iter().zip(&fast) {
+                let direct = m.sensor_mean(s, a, b);
+                let tol = 5e-3 * direct.abs() + 1e-6 * p_max;
+                assert!(
+                    (pf - direct).abs() <= tol,
+                    "t {}: panel [{a}, {b}]: {pf} vs {direct}",
+                    s.t
+                );
+                checked += usize::from(direct > 0.0);
+            }
+            // The panel with the contact point against a brute-force rule (the peak lies in it).
+            let sc = m.arc_of_y(s.c).unwrap();
+            let j = panels.iter().position(|p| p.0 <= sc && sc < p.1).unwrap();
+            let (a, b) = panels[j];
+            let brute = simpson(a, b, 400_000, |x| m.pressure_at_arc(s, x)) / (b - a);
+            assert!(
+                (fast[j] - brute).abs() <= 5e-3 * brute.abs() + 1e-6 * p_max,
+                "t {}: {} vs brute force {brute}",
+                s.t,
+                fast[j]
+            );
+        }
+        assert!(checked > 10, "{checked} wetted panels checked");
+        let h = m.sensor_histories(&panels);
+        assert_eq!((h.len(), h[0].len()), (20, states.len()));
+    }
+}

@@ -2,7 +2,6 @@
 //! wetting condition for the actual shape) and the modified Logvinovich (MLM; Korobkin 2004) mean pressure
 //! on every sensor panel, along the event's entry-velocity history v(t).
 
-use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use super::plan::EntryCase;
@@ -108,15 +107,20 @@ pub fn estimate(case: &EntryCase) -> Result<Estimate> {
                 .into(),
         );
     }
-    // Sensors are independent: in parallel (collected in order, so the result does not depend on threads).
+    // All panels at once, one cumulative pressure integral along the arc per sample (samples in
+    // parallel, collected in order, so the result does not depend on threads).
+    let panels: Vec<(f64, f64)> = case
+        .sensors
+        .iter()
+        .map(|s| ((s.s_m - 0.5 * s.width_m).max(0.0), s.s_m + 0.5 * s.width_m))
+        .collect();
+    let histories = mlm.sensor_histories(&panels);
     let sensors = case
         .sensors
-        .par_iter()
-        .map(|s| {
-            let s1 = (s.s_m - 0.5 * s.width_m).max(0.0);
-            let s2 = s.s_m + 0.5 * s.width_m;
-            let history = mlm.sensor_history(s1, s2);
-            let p = peak_outside(&times, &history, &acoustic);
+        .iter()
+        .zip(&histories)
+        .map(|(s, history)| {
+            let p = peak_outside(&times, history, &acoustic);
             let bound = history
                 .iter()
                 .zip(&acoustic)
