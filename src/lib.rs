@@ -37,5 +37,6 @@ pub mod report;
 pub mod sea;
 pub mod seakeeping;
 pub mod sph;
+pub mod sweep;
 
 pub use error::{Error, InputError, Result};

@@ -21,6 +21,7 @@ mod motions;
 pub mod progress_bar;
 mod sea;
 pub mod station;
+mod sweep;
 
 /// Examples at the end of `slamtool --help`, followed there by the exit statuses.
 const TOP_EXAMPLES: &str = "\
@@ -66,6 +67,12 @@ enum Command {
     /// Strip-theory motions, relative motion at the bow, slam statistics and operability.
     #[command(after_long_help = motions::EXAMPLES)]
     Motions(motions::MotionsArgs),
+    /// Design-space sweeps: many hull and operating variants, in parallel, resumable, sharded.
+    #[command(after_long_help = sweep::EXAMPLES)]
+    Sweep(sweep::SweepArgs),
+    /// Join the results of a sweep's shards.
+    #[command(after_long_help = sweep::MERGE_EXAMPLES)]
+    Merge(sweep::MergeArgs),
     /// Print a shell completion script.
     #[command(after_long_help = completions::EXAMPLES)]
     Completions(completions::CompletionsArgs),
@@ -126,6 +133,8 @@ pub fn main() -> ExitCode {
         Command::Sea(c) => sea::run(c),
         Command::Assess(a) => assess::run(a),
         Command::Motions(a) => motions::run(a),
+        Command::Sweep(a) => sweep::run(a),
+        Command::Merge(a) => sweep::run_merge(a),
         Command::Completions(a) => completions::run(a, &mut command()),
         Command::Man(a) => man::run(a, command()),
     };
