@@ -37,6 +37,7 @@ pub mod report;
 pub mod sea;
 pub mod seakeeping;
 pub mod sph;
+pub mod sweep;
 pub mod validate;
 
 pub use error::{Error, InputError, Result};

@@ -1,5 +1,5 @@
 //! Every TOML example in the README is complete and valid: hull files, sea states and case files are
-//! extracted and read exactly as the tool reads them. A hull example that names an offsets CSV file gets
+//! extracted and read exactly as the tool reads them (sweep files: their schema and cases). A hull example that names an offsets CSV file gets
 //! the README's next CSV block as that file.
 
 use slamtool::hull::Hull;
@@ -31,7 +31,7 @@ fn every_toml_example_in_the_readme_is_read_without_error() {
         std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
     let blocks = code_blocks(&readme);
     let dir = tempfile::tempdir().unwrap();
-    let (mut hulls, mut seas, mut cases) = (0, 0, 0);
+    let (mut hulls, mut seas, mut cases, mut sweeps) = (0, 0, 0, 0);
     for (i, (lang, body)) in blocks.iter().enumerate() {
         if lang != "toml" {
             continue;
@@ -44,6 +44,15 @@ fn every_toml_example_in_the_readme_is_read_without_error() {
                 std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("validation/example.toml");
             slamtool::validate::Case::from_source(SourceText::from_string(at, body.as_str()))
                 .unwrap_or_else(|e| panic!("README validation case example {i}: {e}\n{body}"));
+        } else if body.contains("[grid]") || body.contains("[latin_hypercube]") {
+            // A sweep file: its schema, values and cases (the files it names are the repository's).
+            let f = slamtool::sweep::file::SweepFile::read(&path)
+                .unwrap_or_else(|e| panic!("README sweep example {i}: {e}\n{body}"));
+            let n = slamtool::sweep::cases::expand(&f)
+                .unwrap_or_else(|e| panic!("README sweep example {i}: {e}\n{body}"))
+                .len();
+            assert!(n > 0, "README sweep example {i} has no cases");
+            sweeps += 1;
         } else if body.contains("[section]") {
             case_file::from_source(&SourceText::from_string(&path, body.as_str()))
                 .unwrap_or_else(|e| panic!("README case example {i}: {e}\n{body}"));
@@ -79,7 +88,7 @@ fn every_toml_example_in_the_readme_is_read_without_error() {
         }
     }
     assert!(
-        hulls >= 2 && seas >= 1 && cases >= 1,
-        "{hulls} hulls, {seas} seas, {cases} cases"
+        hulls >= 2 && seas >= 1 && cases >= 1 && sweeps >= 1,
+        "{hulls} hulls, {seas} seas, {cases} cases, {sweeps} sweeps"
     );
 }

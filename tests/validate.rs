@@ -205,7 +205,7 @@ fn document_outline_has_one_summary_row_and_one_section_per_case() {
     let dir = tempfile::tempdir().unwrap();
     let suite = validate::run_suite(&cases, Mode::Quick, dir.path().to_path_buf(), &mut |_| {});
     let o = validate::document::outline(&suite, "test").unwrap();
-    let validate::document::Block::Table { rows, header, .. } = &o.blocks[0] else {
+    let slamtool::report::document::Block::Table { rows, header, .. } = &o.blocks[0] else {
         panic!("the first block is not the summary table");
     };
     assert_eq!(header.len(), 7);
@@ -215,7 +215,12 @@ fn document_outline_has_one_summary_row_and_one_section_per_case() {
     let headings = o
         .blocks
         .iter()
-        .filter(|b| matches!(b, validate::document::Block::Heading { level: 1, .. }))
+        .filter(|b| {
+            matches!(
+                b,
+                slamtool::report::document::Block::Heading { level: 1, .. }
+            )
+        })
         .count();
     assert_eq!(headings, 2);
 }

@@ -23,6 +23,7 @@ pub mod progress_bar;
 mod report;
 mod sea;
 pub mod station;
+mod sweep;
 mod validate;
 
 /// Examples at the end of `slamtool --help`, followed there by the exit statuses.
@@ -75,6 +76,12 @@ enum Command {
     /// The assessment report (PDF, SVG figures with CSV twins) from the saved results of `assess`.
     #[command(after_long_help = report::EXAMPLES)]
     Report(report::ReportArgs),
+    /// Design-space sweeps: many hull and operating variants, in parallel, resumable, sharded.
+    #[command(after_long_help = sweep::EXAMPLES)]
+    Sweep(sweep::SweepArgs),
+    /// Join the results of a sweep's shards.
+    #[command(after_long_help = sweep::MERGE_EXAMPLES)]
+    Merge(sweep::MergeArgs),
     /// Print a shell completion script.
     #[command(after_long_help = completions::EXAMPLES)]
     Completions(completions::CompletionsArgs),
@@ -137,6 +144,8 @@ pub fn main() -> ExitCode {
         Command::Motions(a) => motions::run(a),
         Command::Validate(a) => validate::run(a),
         Command::Report(a) => report::run(a),
+        Command::Sweep(a) => sweep::run(a),
+        Command::Merge(a) => sweep::run_merge(a),
         Command::Completions(a) => completions::run(a, &mut command()),
         Command::Man(a) => man::run(a, command()),
     };

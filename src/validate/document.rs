@@ -1,25 +1,4 @@
-//! The validation report as a document outline, ready for the PDF machinery of `report::document`
-//! (branch `report`): each [`Block`] here has a variant of the same name and fields there, so the PDF is
-//! `Document { title, subtitle, footer, blocks: outline(..).blocks.map(1:1) }.pdf()`.
-//!
-//! After merging `report`, the PDF is (in `cli/validate.rs`, after `report::write`):
-//!
-//! ```ignore
-//! use slamtool::report::document::{Block as B, Document};
-//! use slamtool::validate::document::{Block, outline};
-//! let o = outline(&suite, &prov.commit)?;
-//! let blocks = o.blocks.into_iter().map(|b| match b {
-//!     Block::Heading { level, text } => B::Heading { level, text },
-//!     Block::Paragraph(t) => B::Paragraph(t),
-//!     Block::Strong(t) => B::Strong(t),
-//!     Block::List(v) => B::List(v),
-//!     Block::KeyValue(v) => B::KeyValue(v),
-//!     Block::Table { caption, header, rows } => B::Table { caption, header, rows },
-//!     Block::Svg { svg, caption, width_mm } => B::Svg { svg, caption, width_mm },
-//! }).collect();
-//! let doc = Document { title: o.title, subtitle: o.subtitle, stamp: None, footer: o.footer, blocks };
-//! slamtool::files::write_atomic(&a.out.join("validation.pdf"), &doc.pdf()?)?;
-//! ```
+//! The validation report as a document ([`crate::report::document`]), typeset to `validation.pdf`.
 //!
 //! Front page: one table, one row per case (quantity, computed, reference, error, tolerance, verdict).
 //! Then one section per case: verdict, numbers, tolerance and its reason, known failure or pending data,
@@ -29,29 +8,7 @@ use super::compare::Reference;
 use super::report::{summary_row, summary_rows};
 use super::{Mode, Suite, plot};
 use crate::error::Result;
-
-/// One element of the document (the same variants as `report::document::Block`).
-#[derive(Debug, Clone)]
-pub enum Block {
-    Heading {
-        level: u8,
-        text: String,
-    },
-    Paragraph(String),
-    Strong(String),
-    List(Vec<String>),
-    KeyValue(Vec<(String, String)>),
-    Table {
-        caption: String,
-        header: Vec<String>,
-        rows: Vec<Vec<String>>,
-    },
-    Svg {
-        svg: String,
-        caption: String,
-        width_mm: f64,
-    },
-}
+use crate::report::document::{Block, Document};
 
 /// Title, subtitle lines, footer and blocks of the validation report.
 #[derive(Debug, Clone)]
@@ -176,4 +133,17 @@ pub fn outline(s: &Suite, commit: &str) -> Result<Outline> {
         footer: "slamtool validation report".into(),
         blocks,
     })
+}
+
+/// The validation report as a PDF (no date: identical results give an identical file).
+pub fn pdf(s: &Suite, commit: &str) -> Result<Vec<u8>> {
+    let o = outline(s, commit)?;
+    Document {
+        title: o.title,
+        subtitle: o.subtitle,
+        stamp: None,
+        footer: o.footer,
+        blocks: o.blocks,
+    }
+    .pdf()
 }

@@ -362,7 +362,9 @@ pub fn summary(r: &mut Report, saved: &Saved) {
             .collect();
         r.push(Block::Table {
             caption: "Design-pressure limits checked".into(),
-            header: ["applies to", "limit kPa", "given by"].map(String::from).to_vec(),
+            header: ["applies to", "limit kPa", "given by"]
+                .map(String::from)
+                .to_vec(),
             rows,
         });
         let over: Vec<String> = list(s, "limit_violations")

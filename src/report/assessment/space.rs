@@ -198,9 +198,16 @@ pub fn comparison(r: &mut Report, saved: &Saved) {
             caption: "Computed values beside published ones, with the source of each ('-': not \
                       computed, the note says why)"
                 .into(),
-            header: ["quantity", "computed", "reference", "unit", "source", "note"]
-                .map(String::from)
-                .to_vec(),
+            header: [
+                "quantity",
+                "computed",
+                "reference",
+                "unit",
+                "source",
+                "note",
+            ]
+            .map(String::from)
+            .to_vec(),
             rows,
         });
     }

@@ -1,0 +1,220 @@
+//! `slamtool sweep SWEEP.toml` and `slamtool merge DIR...`: design-space sweeps. The work is
+//! `slamtool::sweep`; this file parses the arguments, picks the shard and prints the summary.
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use clap::Args;
+use slamtool::sweep::{self, SweepResult, output, results};
+use slamtool::{Error, Result};
+
+use super::global::{self, JsonArg};
+use super::progress_bar;
+
+/// Examples at the end of `slamtool sweep --help`.
+pub const EXAMPLES: &str = "\
+Examples:
+  slamtool sweep sweeps/ochi-speed-flare.toml
+  slamtool sweep sweeps/ochi-speed-flare.toml -o reports/flare --shard 0/4
+  SLURM_ARRAY_TASK_ID=1 SLURM_ARRAY_TASK_COUNT=4 slamtool sweep sweeps/ochi-speed-flare.toml -o reports/flare
+  slamtool merge reports/flare/shard-*-of-4 -o reports/flare";
+
+/// Examples at the end of `slamtool merge --help`.
+pub const MERGE_EXAMPLES: &str = "\
+Examples:
+  slamtool merge reports/flare/shard-0-of-2 reports/flare/shard-1-of-2 -o reports/flare";
+
+#[derive(Debug, Args)]
+pub struct SweepArgs {
+    /// Sweep file (sweep.toml): base hull, sea state, fidelity and the parameters to vary.
+    sweep: PathBuf,
+    /// Output folder [default: reports/sweeps/<sweep file name>/]; a shard writes into
+    /// DIR/shard-<i>-of-<n>/.
+    #[arg(short, long, value_name = "DIR", alias = "output")]
+    out: Option<PathBuf>,
+    /// Parallel threads [default: one per core].
+    #[arg(short = 'j', long, value_name = "N")]
+    threads: Option<usize>,
+    /// Run only shard i of n (0-based; case k belongs to shard k mod n). Without it the shard is read
+    /// from SLURM_ARRAY_TASK_ID/SLURM_ARRAY_TASK_COUNT(/SLURM_ARRAY_TASK_MIN) or JOB_COMPLETION_INDEX.
+    #[arg(long, value_name = "i/n")]
+    shard: Option<String>,
+    /// Number of shards with JOB_COMPLETION_INDEX (Kubernetes Indexed Job) [default: $SLAMTOOL_SHARD_COUNT].
+    #[arg(long, value_name = "N")]
+    shard_count: Option<usize>,
+    /// Write into an output folder that holds files a sweep did not write.
+    #[arg(long)]
+    force: bool,
+    /// Stop after computing K cases (to test resuming).
+    #[arg(long, value_name = "K", hide = true)]
+    stop_after: Option<usize>,
+    #[command(flatten)]
+    json: JsonArg,
+}
+
+#[derive(Debug, Args)]
+pub struct MergeArgs {
+    /// Result folders of the shards (each with its sweep.json).
+    #[arg(required = true, value_name = "DIR")]
+    dirs: Vec<PathBuf>,
+    /// Output folder [default: the folder holding the first DIR].
+    #[arg(short, long, value_name = "DIR", alias = "output")]
+    out: Option<PathBuf>,
+    #[command(flatten)]
+    json: JsonArg,
+}
+
+/// Refuse a folder that holds other things than a sweep's files, unless --force.
+fn check_out(dir: &Path, force: bool) -> Result<()> {
+    if dir.exists() && !dir.is_dir() {
+        return Err(Error::Invalid(format!(
+            "the output folder {} is a file, not a folder",
+            dir.display()
+        )));
+    }
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return Ok(());
+    };
+    let other = entries
+        .flatten()
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .find(|n| {
+            !output::KNOWN.contains(&n.as_str()) && !n.starts_with('.') && !n.starts_with("shard-")
+        });
+    match other {
+        Some(n) if !force => Err(Error::Invalid(format!(
+            "the output folder {} holds '{n}', which a sweep did not write; give another -o DIR or --force \
+             to write there anyway",
+            dir.display()
+        ))),
+        _ => Ok(()),
+    }
+}
+
+/// The text summary: counts, failures and the best variants.
+fn summary(r: &SweepResult) -> String {
+    let mut s = format!(
+        "sweep '{}' ({} fidelity): {} of {} cases{}",
+        r.name,
+        r.fidelity,
+        r.cases.len(),
+        r.total_cases,
+        r.shard.map_or(String::new(), |sh| format!(
+            " (shard {}/{})",
+            sh.index, sh.count
+        ))
+    );
+    s += &format!(", {} failed\n", r.failed_cases);
+    for c in r.cases.iter().filter(|c| c.failed.is_some()) {
+        s += &format!(
+            "  FAILED {} ({}): {}\n",
+            c.id,
+            c.parameters
+                .iter()
+                .map(|p| format!("{}={}", p.name, p.value))
+                .collect::<Vec<_>>()
+                .join(", "),
+            c.failed.as_deref().unwrap_or("")
+        );
+    }
+    let content = match output::report_content(r) {
+        Ok(c) => c,
+        Err(e) => return s + &format!("(no best-variants table: {e})\n"),
+    };
+    s += &format!("\nbest variants ({}):\n", content.best_rule);
+    if content.best_rows.is_empty() {
+        s += "  none meets the limits\n";
+    } else {
+        s += &format!("  {}\n", content.best_header.join("  "));
+        for row in &content.best_rows {
+            s += &format!("  {}\n", row.join("  "));
+        }
+    }
+    s
+}
+
+fn report(r: &SweepResult, out: &Path, extra: serde_json::Value, json: bool) -> Result<()> {
+    if json {
+        for w in &r.warnings {
+            global::warn_stderr(w);
+        }
+        let mut v = serde_json::to_value(r).map_err(|e| Error::Invalid(format!("sweep: {e}")))?;
+        v["outputs"] = serde_json::json!({ "folder": out.display().to_string() });
+        v["best_variants"] = serde_json::json!(
+            results::best(r, &r.best)
+                .iter()
+                .map(|c| c.id.clone())
+                .collect::<Vec<_>>()
+        );
+        if let (Some(o), Some(e)) = (v.as_object_mut(), extra.as_object()) {
+            o.extend(e.clone());
+        }
+        global::print_json(v);
+    } else {
+        print!("{}", summary(r));
+        for w in &r.warnings {
+            println!("{}", global::warning_line(w));
+        }
+        println!("\n{}", global::files_written_line(out));
+    }
+    if r.failed_cases > 0 {
+        return Err(Error::Numerical(format!(
+            "{} of {} cases failed (their reasons are in sweep.json and above); the others finished",
+            r.failed_cases,
+            r.cases.len()
+        )));
+    }
+    Ok(())
+}
+
+pub fn run(a: SweepArgs) -> Result<()> {
+    let shard = sweep::shard::resolve(a.shard.as_deref(), a.shard_count, &|k| {
+        std::env::var(k).ok().filter(|v| !v.is_empty())
+    })?;
+    let base = a.out.clone().unwrap_or_else(|| {
+        let stem = a
+            .sweep
+            .file_stem()
+            .map_or("sweep".into(), |s| s.to_string_lossy().into_owned());
+        Path::new("reports").join("sweeps").join(stem)
+    });
+    check_out(&base, a.force)?;
+    let out = match shard {
+        Some(s) => base.join(format!("shard-{}-of-{}", s.index, s.count)),
+        None => base,
+    };
+    let opts = sweep::Options {
+        out: out.clone(),
+        threads: a.threads,
+        shard,
+        stop_after: a.stop_after,
+    };
+    let t0 = Instant::now();
+    let r = sweep::run(&a.sweep, &opts, &progress_bar::handle())?;
+    let secs = t0.elapsed().as_secs_f64();
+    let rate = r.cases.len() as f64 / secs.max(1e-9);
+    if !a.json.json {
+        global::note(&format!(
+            "{} cases in {secs:.2} s ({rate:.1} cases/s, cached cases included)",
+            r.cases.len()
+        ));
+    }
+    report(
+        &r,
+        &out,
+        serde_json::json!({ "wall_time_s": secs, "cases_per_s": rate }),
+        a.json.json,
+    )
+}
+
+pub fn run_merge(a: MergeArgs) -> Result<()> {
+    let r = sweep::merge::merge(&a.dirs)?;
+    let out = a.out.clone().unwrap_or_else(|| {
+        a.dirs[0]
+            .parent()
+            .map_or(PathBuf::from("."), Path::to_path_buf)
+    });
+    check_out(&out, false)?;
+    output::write(&out, &r)?;
+    report(&r, &out, serde_json::json!({}), a.json.json)
+}

@@ -1,0 +1,44 @@
+//! `slamtool sweep`: design-space sweeps. A sweep file names a base hull, a sea state, the fidelity, and
+//! the parameters to vary (lists, ranges or a Latin hypercube): operating parameters (speed, regular-wave
+//! height and length or a named wave, H_s and T_p of the irregular seas, draft and trim) and hull
+//! transformations (bow flare and deadrise, length and beam). Every case runs through the `assess`
+//! machinery; results are cached per case and per SPH run, so a killed sweep resumes, and a sweep can be
+//! split into shards for a scheduler and merged back.
+//!
+//! The layers, in the order the data flows:
+//!
+//! * [`file`]: the sweep file and its checks (located errors);
+//! * [`cases`] (with [`lhs`]): the cases, in a fixed order;
+//! * [`transform`]: the hull variants;
+//! * [`prepare`]: everything decided before running (variants checked, content keys);
+//! * [`motions`] and [`execute`]: running the cases (analytic: shared strip theory per variant; screen
+//!   and SPH: `assess::run`), with the case cache;
+//! * [`shard`] and [`merge`]: splitting and joining;
+//! * [`results`] and [`output`]: tables, plots and report content.
+
+pub mod cases;
+pub mod execute;
+pub mod file;
+pub mod lhs;
+pub mod merge;
+pub mod motions;
+pub mod output;
+pub mod prepare;
+pub mod report;
+pub mod results;
+pub mod shard;
+pub mod transform;
+
+use std::path::Path;
+
+pub use execute::Options;
+pub use results::{CaseResult, Shard, SweepResult};
+
+use crate::error::Result;
+use crate::progress::ProgressHandle;
+
+/// Read, check and run the sweep file at `path` with `opts`, writing the results into `opts.out`.
+pub fn run(path: &Path, opts: &Options, progress: &ProgressHandle) -> Result<SweepResult> {
+    let p = prepare::prepare(path, &opts.out)?;
+    execute::run(&p, opts, progress)
+}

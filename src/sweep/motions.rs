@@ -1,0 +1,200 @@
+//! Strip theory for a sweep, shared by the cases of one hull variant. Building the sectional solutions of
+//! a hull (Frank close-fit at each strip and encounter frequency) is the costly part of an analytic case;
+//! the cases of one variant differ only in speed and waves, so one [`StripTable`] per variant serves them
+//! all. The table covers the encounter frequencies of *every* case of that variant in the sweep file (not
+//! only those of one shard or of the cases still to run), so a case's result does not depend on sharding
+//! or on resuming; its range is part of the case's cache key. From the table, each case takes the same
+//! steps as `assess::plan` (through `seakeeping::analysis`): the heave-pitch response in each regular
+//! wave, relative motion and keel entry at the stations, one water-entry event per emerging station, and
+//! Ochi's slam statistics in each irregular sea. Natural periods and RAO tables, which an assessment
+//! prints, are not needed and not computed.
+
+use crate::assess::plan::{EntryCase, Event};
+use crate::error::Result;
+use crate::hull::{Hull, LoadingCondition};
+use crate::impact;
+use crate::report::sanity::SlamFlag;
+use crate::sea::{IrregularSea, RegularWave};
+use crate::seakeeping::ShipModel;
+use crate::seakeeping::analysis::{RegularStation, Station};
+use crate::seakeeping::relative_motion;
+use crate::seakeeping::slamming::{self, SampledSpectrum, SlamStatistics};
+use crate::seakeeping::strip_table::StripTable;
+use crate::seakeeping::strip_theory::{self, StripSettings};
+
+/// Grid spacing of the table in ln ω, as `slamtool motions` and `assess` use it.
+pub const TABLE_SPACING: f64 = 0.1;
+/// Samples per spectrum and per entry profile, as `assess` uses them.
+const SPECTRUM_SAMPLES: usize = 30;
+const PROFILE_SAMPLES: usize = 41;
+
+/// The sampled spectrum of an irregular sea, as `seakeeping::analysis` samples it (0.4 to 3.5 ω_p).
+pub fn sampled(sea: &IrregularSea) -> Result<SampledSpectrum> {
+    let wp = sea.spectrum.peak_frequency();
+    SampledSpectrum::from_fn(
+        |w| sea.spectrum.density(w),
+        0.4 * wp,
+        3.5 * wp,
+        SPECTRUM_SAMPLES,
+    )
+}
+
+/// The encounter frequencies a case needs at `speed`.
+pub fn needed(speed: f64, regular: &[RegularWave], irregular: &[IrregularSea]) -> Result<Vec<f64>> {
+    let mut out = Vec::new();
+    for w in regular {
+        out.push(strip_theory::encounter_frequency(
+            w.omega,
+            speed,
+            crate::sea::G,
+        ));
+    }
+    for s in irregular {
+        for &w in &sampled(s)?.omega {
+            out.push(strip_theory::encounter_frequency(w, speed, crate::sea::G));
+        }
+    }
+    Ok(out)
+}
+
+/// The strip theory of a ship model: shared by every hull variant with the same underwater form and mass
+/// properties (a flare change above the waterline leaves it as it is).
+pub struct StripModel {
+    pub model: ShipModel,
+    pub table: StripTable,
+    /// Ochi's threshold velocity 0.093 sqrt(g Lpp).
+    pub threshold: f64,
+}
+
+impl StripModel {
+    /// The table of `model` over the frequency band `band` (lowest, highest).
+    pub fn new(model: ShipModel, band: (f64, f64)) -> Result<Self> {
+        let table = StripTable::covering(
+            &model,
+            &[band.0, band.1],
+            TABLE_SPACING,
+            &StripSettings::default(),
+        )?;
+        Ok(Self {
+            threshold: slamming::threshold_velocity(model.g, model.lpp),
+            model,
+            table,
+        })
+    }
+}
+
+/// A content key of a ship model (its strips, mass properties and settings): variants with equal keys
+/// share their [`StripModel`].
+pub fn model_key(model: &ShipModel) -> String {
+    crate::provenance::sha256_hex(format!("{model:?}").as_bytes())
+}
+
+/// A hull variant ready for its cases: its strip theory and its seakeeping stations.
+pub struct VariantModel<'a> {
+    pub strip: &'a StripModel,
+    pub stations: Vec<Station>,
+    /// The sensors of each station: the hull's, or the default panels where it has none (as `assess`).
+    pub sensors: Vec<Vec<crate::sph::sensors::SensorSpec>>,
+}
+
+impl<'a> VariantModel<'a> {
+    /// The seakeeping stations of `hull` in `loading` at `at` (fractions of Lpp aft of the FP).
+    pub fn new(
+        strip: &'a StripModel,
+        hull: &Hull,
+        loading: &LoadingCondition,
+        at: &[f64],
+    ) -> Result<Self> {
+        let stations = at
+            .iter()
+            .map(|&f| impact::seakeeping_station(hull, loading, f))
+            .collect::<Result<Vec<_>>>()?;
+        let sensors = stations
+            .iter()
+            .map(|st| {
+                let given = impact::station_sensors(hull, st.x);
+                if given.is_empty() {
+                    impact::default_sensors::default_sensors(hull, loading, st.x)
+                } else {
+                    Ok(given)
+                }
+            })
+            .collect::<Result<Vec<_>>>()?;
+        Ok(Self {
+            strip,
+            stations,
+            sensors,
+        })
+    }
+
+    /// The events of one speed in the regular waves, in the order wave, station (as `assess::plan`).
+    pub fn events(&self, hull: &Hull, speed: f64, waves: &[RegularWave]) -> Result<Vec<Event>> {
+        let mut events = Vec::new();
+        for w in waves {
+            let r = strip_theory::respond(&self.strip.model, w.omega, speed, &self.strip.table)?;
+            let za = w.amplitude();
+            for (s, sensors) in self.stations.iter().zip(&self.sensors) {
+                let rm = relative_motion::at_station(&r, s.x, 1.0)?;
+                let st = RegularStation {
+                    aft_of_fp: s.aft_of_fp,
+                    x: s.x,
+                    draft: s.draft,
+                    relative_motion_m: rm.motion.norm() * za,
+                    relative_velocity_m_s: rm.velocity.norm() * za,
+                    keel_entry: relative_motion::keel_entry(
+                        &rm,
+                        r.omega_e,
+                        za,
+                        s.draft,
+                        s.height,
+                        PROFILE_SAMPLES,
+                    ),
+                };
+                let entry = match &st.keel_entry {
+                    Some(k) => Some(EntryCase {
+                        half_points: hull.section_at(st.x)?.points.clone(),
+                        motion: impact::entry_motion(k),
+                        sensors: sensors.clone(),
+                    }),
+                    None => None,
+                };
+                events.push(Event {
+                    station: st.aft_of_fp,
+                    x: st.x,
+                    speed_m_s: speed,
+                    wave: w.name.clone(),
+                    flag: SlamFlag::of(&st, self.strip.threshold),
+                    entry_velocity_m_s: st.keel_entry.as_ref().map(|k| k.entry_velocity),
+                    entry_time_s: st.keel_entry.as_ref().map(|k| k.t_entry),
+                    encounter_period_s: 2.0 * std::f64::consts::PI / r.omega_e,
+                    wave_omega_rad_s: w.omega,
+                    wave_amplitude_m: za,
+                    draft_m: st.draft,
+                    design: None,
+                    entry,
+                });
+            }
+        }
+        Ok(events)
+    }
+
+    /// Ochi's slam statistics at the stations for one speed in an irregular sea.
+    pub fn statistics(&self, speed: f64, sea: &IrregularSea) -> Result<Vec<SlamStatistics>> {
+        let spec = sampled(sea)?;
+        let xs: Vec<f64> = self.stations.iter().map(|s| s.x).collect();
+        let pts: Vec<(f64, f64)> = self.stations.iter().map(|s| (s.x, s.draft)).collect();
+        let responses = slamming::response_spectra(
+            &self.strip.model,
+            &spec,
+            speed,
+            &xs,
+            1.0,
+            &self.strip.table,
+        )?;
+        Ok(slamming::statistics_from_spectra(
+            &self.strip.model,
+            &responses,
+            &pts,
+        ))
+    }
+}

@@ -1,0 +1,425 @@
+//! The results of a sweep: one [`CaseResult`] per case (kept in the case cache and in `sweep.json`), the
+//! tidy table (`results.csv`, one row per case × station × sensor), the case table (`cases.csv`, one row
+//! per case) and the best variants under the sweep file's limits (`best.csv`).
+
+use serde::{Deserialize, Serialize};
+
+use super::file::{Best, Objective};
+use crate::assess::{EventResult, StationResult};
+use crate::error::Result;
+use crate::provenance::{InputFile, Provenance};
+use crate::report::csv_number;
+use crate::report::sanity::SlamFlag;
+
+/// One parameter value of a case.
+#[derive(Debug, Clone, Serialize, Deserialize, PartialEq)]
+pub struct Param {
+    pub name: String,
+    pub value: f64,
+}
+
+/// A sensor's design pressure in a case: the largest over the case's events (SPH where it ran at the
+/// station, the analytic MLM peak otherwise, as `assess` decides).
+#[derive(Debug, Clone, Serialize, Deserialize, PartialEq)]
+pub struct CaseSensor {
+    pub name: String,
+    pub design_pressure_pa: f64,
+    pub source: String,
+    pub speed_m_per_s: f64,
+    pub wave: String,
+}
+
+/// A station in a case.
+#[derive(Debug, Clone, Serialize, Deserialize, PartialEq)]
+pub struct CaseStation {
+    pub station: f64,
+    pub x_m: f64,
+    pub emerging_events: usize,
+    pub slamming_events: usize,
+    /// Largest keel-entry velocity over the case's regular-wave events.
+    pub max_entry_velocity_m_per_s: Option<f64>,
+    /// Ochi's slam probability per encounter, the largest over the case's speeds and irregular seas
+    /// (None without an irregular sea).
+    pub slam_probability: Option<f64>,
+    pub slams_per_hour: Option<f64>,
+    pub section_force_peak_n_per_m: Option<f64>,
+    pub sensors: Vec<CaseSensor>,
+}
+
+/// One case.
+#[derive(Debug, Clone, Serialize, Deserialize, PartialEq)]
+pub struct CaseResult {
+    pub index: usize,
+    pub id: String,
+    /// Content hash of everything that determines the case (its cache key).
+    pub key: String,
+    pub parameters: Vec<Param>,
+    pub wave: Option<String>,
+    /// The variant hull file (relative to the output folder), when the hull is transformed.
+    pub hull_file: Option<String>,
+    pub lpp_m: f64,
+    pub speeds_m_per_s: Vec<f64>,
+    pub stations: Vec<CaseStation>,
+    pub max_design_pressure_pa: Option<f64>,
+    pub max_section_force_n_per_m: Option<f64>,
+    pub max_slam_probability: Option<f64>,
+    pub failed: Option<String>,
+    pub warnings: Vec<String>,
+}
+
+impl CaseResult {
+    /// The value the best-variants table ranks by.
+    pub fn objective(&self, o: Objective) -> Option<f64> {
+        match o {
+            Objective::DesignPressure => self.max_design_pressure_pa,
+            Objective::SectionForce => self.max_section_force_n_per_m,
+            Objective::SlamProbability => self.max_slam_probability,
+        }
+    }
+
+    pub fn param(&self, name: &str) -> Option<f64> {
+        self.parameters
+            .iter()
+            .find(|p| p.name == name)
+            .map(|p| p.value)
+    }
+}
+
+/// Slam statistics of one station: (probability, slams per hour), the largest probability.
+pub type Stats = Option<(f64, f64)>;
+
+/// The stations of a case from its events and per-station design values (as `assess` computes them)
+/// and the slam statistics per station.
+pub fn stations(
+    events: &[EventResult],
+    per_station: &[StationResult],
+    stats: &[Stats],
+) -> Vec<CaseStation> {
+    per_station
+        .iter()
+        .enumerate()
+        .map(|(k, s)| {
+            let at: Vec<&EventResult> = events
+                .iter()
+                .filter(|e| (e.station - s.station).abs() < 1e-9)
+                .collect();
+            CaseStation {
+                station: s.station,
+                x_m: s.x_m,
+                emerging_events: s.emerging_events,
+                slamming_events: at.iter().filter(|e| e.slam_flag == SlamFlag::Slam).count(),
+                max_entry_velocity_m_per_s: at
+                    .iter()
+                    .filter_map(|e| e.entry_velocity_m_per_s)
+                    .reduce(f64::max),
+                slam_probability: stats.get(k).copied().flatten().map(|s| s.0),
+                slams_per_hour: stats.get(k).copied().flatten().map(|s| s.1),
+                section_force_peak_n_per_m: s.section_force_peak_n_per_m.as_ref().map(|d| d.value),
+                sensors: s
+                    .design_pressure_pa
+                    .iter()
+                    .map(|d| CaseSensor {
+                        name: d.name.clone(),
+                        design_pressure_pa: d.value,
+                        source: d.source.to_string(),
+                        speed_m_per_s: d.speed_m_per_s,
+                        wave: d.wave.clone(),
+                    })
+                    .collect(),
+            }
+        })
+        .collect()
+}
+
+/// Fill the case-level maxima from the stations.
+pub fn summarise(c: &mut CaseResult) {
+    c.max_design_pressure_pa = c
+        .stations
+        .iter()
+        .flat_map(|s| s.sensors.iter().map(|q| q.design_pressure_pa))
+        .reduce(f64::max);
+    c.max_section_force_n_per_m = c
+        .stations
+        .iter()
+        .filter_map(|s| s.section_force_peak_n_per_m)
+        .reduce(f64::max);
+    c.max_slam_probability = c
+        .stations
+        .iter()
+        .filter_map(|s| s.slam_probability)
+        .reduce(f64::max);
+}
+
+/// Provenance as stored in `sweep.json` (read back by `merge`).
+#[derive(Debug, Clone, Serialize, Deserialize, PartialEq)]
+pub struct Prov {
+    pub tool: String,
+    pub commit: String,
+    pub inputs: Vec<ProvInput>,
+    pub settings: serde_json::Value,
+}
+
+#[derive(Debug, Clone, Serialize, Deserialize, PartialEq)]
+pub struct ProvInput {
+    pub path: String,
+    pub sha256: String,
+}
+
+impl Prov {
+    pub fn from_provenance(p: &Provenance) -> Self {
+        Self {
+            tool: p.tool.clone(),
+            commit: p.commit.clone(),
+            inputs: p
+                .inputs
+                .iter()
+                .map(|i| ProvInput {
+                    path: i.path.clone(),
+                    sha256: i.sha256.clone(),
+                })
+                .collect(),
+            settings: p.settings.clone(),
+        }
+    }
+
+    pub fn provenance(&self) -> Provenance {
+        Provenance {
+            tool: self.tool.clone(),
+            commit: self.commit.clone(),
+            inputs: self
+                .inputs
+                .iter()
+                .map(|i| InputFile {
+                    path: i.path.clone(),
+                    sha256: i.sha256.clone(),
+                })
+                .collect(),
+            settings: self.settings.clone(),
+        }
+    }
+}
+
+/// Which part of a sweep a result holds.
+#[derive(Debug, Clone, Copy, Serialize, Deserialize, PartialEq, Eq)]
+pub struct Shard {
+    /// 0-based.
+    pub index: usize,
+    pub count: usize,
+}
+
+/// A sweep's results (`sweep.json`).
+#[derive(Debug, Clone, Serialize, Deserialize, PartialEq)]
+pub struct SweepResult {
+    pub tool: String,
+    pub provenance: Prov,
+    /// SHA-256 of the sweep file and of the hull and sea files it names: shards of one sweep share it.
+    pub sweep_hash: String,
+    pub name: String,
+    pub fidelity: String,
+    /// The parameters varied (numeric, then `wave`), in case-table order.
+    pub parameters: Vec<String>,
+    pub best: Best,
+    pub total_cases: usize,
+    /// The shard this holds, or None for a whole sweep (run unsharded, or merged).
+    pub shard: Option<Shard>,
+    pub cases: Vec<CaseResult>,
+    pub failed_cases: usize,
+    pub warnings: Vec<String>,
+}
+
+fn num(v: Option<f64>) -> String {
+    v.map_or(String::new(), csv_number)
+}
+
+/// The parameter columns of a case.
+fn param_cells(r: &SweepResult, c: &CaseResult) -> Vec<String> {
+    r.parameters
+        .iter()
+        .map(|p| {
+            if p == "wave" {
+                c.wave.clone().unwrap_or_default()
+            } else {
+                num(c.param(p))
+            }
+        })
+        .collect()
+}
+
+/// The tidy table: one row per case × station × sensor (one row per station without sensors, one row per
+/// failed case).
+pub fn results_csv(r: &SweepResult) -> Result<String> {
+    let mut header: Vec<String> = vec!["case".into()];
+    header.extend(r.parameters.iter().cloned());
+    header.extend(
+        [
+            "station",
+            "x_m",
+            "sensor",
+            "design_pressure_pa",
+            "source",
+            "governing_speed_m_per_s",
+            "governing_wave",
+            "emerging_events",
+            "slamming_events",
+            "max_entry_velocity_m_per_s",
+            "slam_probability",
+            "slams_per_hour",
+            "section_force_peak_n_per_m",
+            "failed",
+        ]
+        .map(String::from),
+    );
+    let mut rows = Vec::new();
+    for c in &r.cases {
+        let head = || {
+            let mut v = vec![c.id.clone()];
+            v.extend(param_cells(r, c));
+            v
+        };
+        if c.stations.is_empty() {
+            let mut row = head();
+            row.extend(std::iter::repeat_n(String::new(), 13));
+            row.push(c.failed.clone().unwrap_or_default());
+            rows.push(row);
+        }
+        for s in &c.stations {
+            let station_cells = |row: &mut Vec<String>| {
+                row.push(s.emerging_events.to_string());
+                row.push(s.slamming_events.to_string());
+                row.push(num(s.max_entry_velocity_m_per_s));
+                row.push(num(s.slam_probability));
+                row.push(num(s.slams_per_hour));
+                row.push(num(s.section_force_peak_n_per_m));
+                row.push(c.failed.clone().unwrap_or_default());
+            };
+            if s.sensors.is_empty() {
+                let mut row = head();
+                row.extend([csv_number(s.station), csv_number(s.x_m)]);
+                row.extend(std::iter::repeat_n(String::new(), 5));
+                station_cells(&mut row);
+                rows.push(row);
+            }
+            for q in &s.sensors {
+                let mut row = head();
+                row.extend([
+                    csv_number(s.station),
+                    csv_number(s.x_m),
+                    q.name.clone(),
+                    csv_number(q.design_pressure_pa),
+                    q.source.clone(),
+                    csv_number(q.speed_m_per_s),
+                    q.wave.clone(),
+                ]);
+                station_cells(&mut row);
+                rows.push(row);
+            }
+        }
+    }
+    crate::sph::output::csv_text(Some(&r.provenance.provenance()), &header, &rows)
+}
+
+/// One row per case: its parameters and maxima.
+pub fn cases_csv(r: &SweepResult) -> Result<String> {
+    let (header, rows) = case_table(r, &r.cases.iter().collect::<Vec<_>>());
+    crate::sph::output::csv_text(Some(&r.provenance.provenance()), &header, &rows)
+}
+
+fn case_table(r: &SweepResult, cases: &[&CaseResult]) -> (Vec<String>, Vec<Vec<String>>) {
+    let mut header: Vec<String> = vec!["case".into()];
+    header.extend(r.parameters.iter().cloned());
+    header.extend(
+        [
+            "max_design_pressure_pa",
+            "max_section_force_n_per_m",
+            "max_slam_probability",
+            "hull_file",
+            "failed",
+        ]
+        .map(String::from),
+    );
+    let rows = cases
+        .iter()
+        .map(|c| {
+            let mut v = vec![c.id.clone()];
+            v.extend(param_cells(r, c));
+            v.extend([
+                num(c.max_design_pressure_pa),
+                num(c.max_section_force_n_per_m),
+                num(c.max_slam_probability),
+                c.hull_file.clone().unwrap_or_default(),
+                c.failed.clone().unwrap_or_default(),
+            ]);
+            v
+        })
+        .collect();
+    (header, rows)
+}
+
+/// The best variants: cases that finished, meet every limit of the rule and have a value of its
+/// objective, lowest objective first (ties by case order), at most `count`.
+pub fn best<'a>(r: &'a SweepResult, rule: &Best) -> Vec<&'a CaseResult> {
+    let mut ok: Vec<&CaseResult> = r
+        .cases
+        .iter()
+        .filter(|c| c.failed.is_none())
+        .filter(|c| {
+            rule.max_slam_probability
+                .is_none_or(|p| c.max_slam_probability.is_some_and(|v| v < p))
+        })
+        .filter(|c| {
+            rule.max_design_pressure_pa
+                .is_none_or(|p| c.max_design_pressure_pa.is_some_and(|v| v <= p))
+        })
+        .filter(|c| c.objective(rule.minimise).is_some())
+        .collect();
+    ok.sort_by(|a, b| {
+        let (x, y) = (
+            a.objective(rule.minimise).unwrap_or(f64::INFINITY),
+            b.objective(rule.minimise).unwrap_or(f64::INFINITY),
+        );
+        x.total_cmp(&y).then(a.index.cmp(&b.index))
+    });
+    ok.truncate(rule.count);
+    ok
+}
+
+/// The rule in words, for the table's heading.
+pub fn rule_text(rule: &Best) -> String {
+    let what = match rule.minimise {
+        Objective::DesignPressure => {
+            "lowest design pressure (largest sensor design pressure of the case)"
+        }
+        Objective::SectionForce => "lowest section force (largest section-force peak of the case)",
+        Objective::SlamProbability => "lowest slam probability (largest over the stations)",
+    };
+    let mut limits = Vec::new();
+    if let Some(p) = rule.max_slam_probability {
+        limits.push(format!("slam probability below {} %", p * 100.0));
+    }
+    if let Some(p) = rule.max_design_pressure_pa {
+        limits.push(format!("design pressure at most {} kPa", p / 1e3));
+    }
+    if limits.is_empty() {
+        format!("{what}, no limits")
+    } else {
+        format!("{what}, with {}", limits.join(" and "))
+    }
+}
+
+/// `best.csv`: the best variants under the rule.
+pub fn best_csv(r: &SweepResult) -> Result<String> {
+    let chosen = best(r, &r.best);
+    let (mut header, rows) = case_table(r, &chosen);
+    header.insert(0, "rank".into());
+    let rows: Vec<Vec<String>> = rows
+        .into_iter()
+        .enumerate()
+        .map(|(i, mut row)| {
+            row.insert(0, (i + 1).to_string());
+            row
+        })
+        .collect();
+    let mut prov = r.provenance.provenance();
+    prov.settings["best_rule"] = serde_json::json!(rule_text(&r.best));
+    crate::sph::output::csv_text(Some(&prov), &header, &rows)
+}
