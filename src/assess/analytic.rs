@@ -55,7 +55,7 @@ impl Estimate {
 }
 
 /// The (t, v) samples of a prescribed entry motion.
-fn samples(motion: &MotionSpec) -> Result<(Vec<f64>, Vec<f64>)> {
+pub(super) fn samples(motion: &MotionSpec) -> Result<(Vec<f64>, Vec<f64>)> {
     match motion {
         MotionSpec::Prescribed { table } => Ok((
             table.iter().map(|r| r[0]).collect(),

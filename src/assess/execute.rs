@@ -14,6 +14,7 @@ use super::plan::{self, Event, Fidelity, Plan, Settings};
 use super::results::{self, Assessment, EventResult, SphRecord, SphSensor};
 use crate::error::{Error, Result};
 use crate::hull::Hull;
+use crate::loads::cutoff;
 use crate::progress::ProgressHandle;
 use crate::provenance::Provenance;
 use crate::sea::SeaState;
@@ -41,6 +42,13 @@ fn record(key: &str, s: &RunSummary) -> SphRecord {
     SphRecord {
         key: key.to_string(),
         dp_m: s.dp_m,
+        filter_cutoff_hz: s.setup.filter_cutoff_hz,
+        filter_rule: s
+            .setup
+            .notes
+            .iter()
+            .find(|n| n.contains("low-pass"))
+            .cloned(),
         force_peak_n_per_m: s.force.summary.raw.value,
         force_peak_time_s: s.force.summary.raw.time,
         force_convergence: verdict(s, "section force raw").0,
@@ -78,13 +86,20 @@ fn sph_event(
         .as_ref()
         .ok_or_else(|| Error::Invalid("no water entry to run".into()))?;
     let section = Section::from_half_points(case.half_points.clone())?;
-    let setup = sph::case::resolve(
+    let mut setup = sph::case::resolve(
         &e.label(),
         &section,
         &case.motion,
         case.sensors.clone(),
         overrides,
     )?;
+    if setup.filter_cutoff_hz.is_none() {
+        let (t, v) = analytic::samples(&case.motion)?;
+        let coarsest = setup.nominal_sample_hz() / study.ratio.powi(study.levels as i32 - 1);
+        let c = cutoff::slamming_cutoff(&section, &t, &v, &setup.sensors, setup.c0, coarsest)?;
+        setup.filter_cutoff_hz = c.hz;
+        setup.notes.push(c.note);
+    }
     let key = cache::key(&setup, &study)?;
     if use_cache && let Some(r) = cache::lookup(out, &key) {
         return Ok(r);

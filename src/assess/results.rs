@@ -33,6 +33,12 @@ pub struct SphRecord {
     /// Cache key (the run folder is `cache/<key>/`).
     pub key: String,
     pub dp_m: f64,
+    /// Cut-off of the zero-phase low-pass filter of the `filtered_peak_pa` values (Hz), or none.
+    #[serde(default)]
+    pub filter_cutoff_hz: Option<f64>,
+    /// How the cut-off was chosen ([`crate::loads::cutoff`]).
+    #[serde(default)]
+    pub filter_rule: Option<String>,
     pub force_peak_n_per_m: f64,
     pub force_peak_time_s: f64,
     pub force_convergence: Option<String>,
@@ -247,6 +253,7 @@ pub fn pressures_csv(a: &Assessment, sensors_of: &dyn Fn(f64) -> Vec<String>) ->
         "sensor",
         "sph_raw_peak_pa",
         "sph_filtered_peak_pa",
+        "sph_filter_cutoff_hz",
         "sph_peak_time_s",
         "sph_impulse_pa_s",
         "sph_convergence",
@@ -290,6 +297,7 @@ pub fn pressures_csv(a: &Assessment, sensors_of: &dyn Fn(f64) -> Vec<String>) ->
                 n.clone(),
                 num(s.map(|q| q.raw_peak_pa)),
                 num(s.and_then(|q| q.filtered_peak_pa)),
+                num(e.sph.as_ref().and_then(|r| r.filter_cutoff_hz)),
                 num(s.map(|q| q.peak_time_s)),
                 num(s.map(|q| q.impulse_pa_s)),
                 s.and_then(|q| q.convergence.clone()).unwrap_or_default(),

@@ -21,6 +21,32 @@ const BOTTOM: u32 = 55;
 const LEFT: u32 = 70;
 const MARGIN: u32 = 20;
 
+/// Width of the column of sensor names beside a side that carries sensors, as a fraction of the largest
+/// half-breadth.
+const CALLOUT_COLUMN: f64 = 0.45;
+/// Font size of the sensor names, and the vertical pitch of their column (pixels).
+const CALLOUT_FONT: u32 = 15;
+const CALLOUT_PX: f64 = 19.0;
+
+/// Heights of the names of sensors at heights `z` (sorted upwards): each as close to its sensor as it can
+/// be while consecutive names stay at least `gap` apart, kept within (`lo`, `hi`).
+fn callout_heights(z: &[f64], gap: f64, lo: f64, hi: f64) -> Vec<f64> {
+    let mut out: Vec<f64> = Vec::with_capacity(z.len());
+    for &zi in z {
+        let below = out.last().map_or(lo + 0.5 * gap, |&l| l + gap);
+        out.push(zi.max(below));
+    }
+    // Pushed over the top: shift down from the top, keeping the gaps.
+    let mut ceiling = hi - 0.5 * gap;
+    for v in out.iter_mut().rev() {
+        if *v > ceiling {
+            *v = ceiling;
+        }
+        ceiling = *v - gap;
+    }
+    out
+}
+
 /// Colours of the loadings' waterlines, in turn.
 const WATER: [RGBColor; 3] = [
     RGBColor(0, 90, 200),
@@ -50,7 +76,17 @@ pub fn body_plan_svg(hull: &Hull) -> Result<String> {
             .fold(0.0, f64::max),
     );
     let pad = 0.08 * ymax.max(ztop - zmin);
-    let (y0, y1) = (-ymax - pad, ymax + pad);
+    // A column for the sensor names beside each side that carries sensors (callouts with leader lines,
+    // so that names of sensors close together near the keel never overlap).
+    let has = |fore: bool| hull.sensors.iter().any(|q| (q.x >= 0.0) == fore);
+    let column = |fore: bool| {
+        if has(fore) {
+            CALLOUT_COLUMN * ymax
+        } else {
+            0.0
+        }
+    };
+    let (y0, y1) = (-ymax - pad - column(false), ymax + pad + column(true));
     let (z0, z1) = (zmin - 0.5 * pad, ztop + pad);
     let h_plot = (PLOT_WIDTH as f64 * (z1 - z0) / (y1 - y0))
         .round()
@@ -161,28 +197,67 @@ pub fn body_plan_svg(hull: &Hull) -> Result<String> {
                 )))
                 .map_err(draw_error)?;
         }
+        let px_per_m = PLOT_WIDTH as f64 / (y1 - y0);
         let red = RGBColor(200, 30, 30);
-        for sensor in &hull.sensors {
-            let s = if sensor.x < 0.0 { -1.0 } else { 1.0 };
-            let at = (s * sensor.position[0], sensor.position[1]);
-            chart
-                .draw_series(std::iter::once(Circle::new(at, 4, red.filled())))
-                .map_err(draw_error)?;
-            let style = TextStyle::from((FONT, 11).into_font())
-                .color(&red)
-                .pos(Pos::new(
-                    if s > 0.0 { HPos::Left } else { HPos::Right },
-                    VPos::Center,
-                ));
-            chart
-                .draw_series(std::iter::once(Text::new(
-                    format!(" {} ", sensor.name),
-                    at,
-                    style,
-                )))
-                .map_err(draw_error)?;
+        let leader = RGBColor(215, 140, 140);
+        for fore in [true, false] {
+            let s = if fore { 1.0 } else { -1.0 };
+            let mut marks: Vec<(f64, f64, &str)> = hull
+                .sensors
+                .iter()
+                .filter(|q| (q.x >= 0.0) == fore)
+                .map(|q| (s * q.position[0], q.position[1], q.name.as_str()))
+                .collect();
+            if marks.is_empty() {
+                continue;
+            }
+            marks.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.abs().total_cmp(&b.0.abs())));
+            let gap = CALLOUT_PX / px_per_m;
+            let z_at = callout_heights(&marks.iter().map(|m| m.1).collect::<Vec<_>>(), gap, z0, z1);
+            let y_text = s * (ymax + 0.5 * pad);
+            for ((y, z, name), zt) in marks.iter().zip(z_at) {
+                chart
+                    .draw_series(LineSeries::new(
+                        [(*y, *z), (y_text, zt)],
+                        leader.stroke_width(1),
+                    ))
+                    .map_err(draw_error)?;
+                chart
+                    .draw_series(std::iter::once(Circle::new((*y, *z), 3, red.filled())))
+                    .map_err(draw_error)?;
+                let style = TextStyle::from((FONT, CALLOUT_FONT).into_font())
+                    .color(&red)
+                    .pos(Pos::new(
+                        if fore { HPos::Left } else { HPos::Right },
+                        VPos::Center,
+                    ));
+                chart
+                    .draw_series(std::iter::once(Text::new(
+                        format!(" {name}"),
+                        (y_text, zt),
+                        style,
+                    )))
+                    .map_err(draw_error)?;
+            }
         }
         root.present().map_err(draw_error)?;
     }
     Ok(svg)
+}
+
+#[cfg(test)]
+mod callout_tests {
+    use super::callout_heights;
+
+    #[test]
+    fn names_keep_their_gap_and_stay_in_the_plot() {
+        let z = [0.0, 0.0, 0.001, 0.05, 0.3];
+        let h = callout_heights(&z, 0.02, -0.01, 0.31);
+        for w in h.windows(2) {
+            assert!(w[1] - w[0] >= 0.02 - 1e-12, "{h:?}");
+        }
+        assert!(h.iter().all(|&v| v > -0.01 && v < 0.31), "{h:?}");
+        // a sensor with room around it keeps its own height
+        assert!((h[3] - 0.05).abs() < 1e-12);
+    }
 }

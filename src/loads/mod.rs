@@ -3,6 +3,7 @@
 
 pub mod butterworth;
 pub mod convergence;
+pub mod cutoff;
 pub mod peaks;
 
 pub use butterworth::{LowPass, resample_uniform};

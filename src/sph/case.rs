@@ -180,6 +180,12 @@ pub struct Setup {
 }
 
 impl Setup {
+    /// Lower bound of the sampling rate of the histories (Hz): one sample per step, and the step
+    /// dt = min(C h / (c0 + |v|max), ...) of [`crate::sph::integrator::time_step`] is at most C h / c0.
+    pub fn nominal_sample_hz(&self) -> f64 {
+        self.c0 / (self.cfl * self.h_over_dp * self.dp)
+    }
+
     /// Rough number of time steps (for reserving history storage).
     pub fn expected_steps(&self) -> usize {
         let dt = self.cfl * self.h_over_dp * self.dp / (self.c0 * 1.1);

@@ -192,16 +192,24 @@ pub fn section(r: &mut Report, saved: &Saved) {
             }
         }
         fig.size = (800, 400);
+        let rule = setup
+            .get("notes")
+            .and_then(|n| n.as_array())
+            .and_then(|n| {
+                n.iter()
+                    .filter_map(|x| x.as_str())
+                    .find(|x| x.contains("low-pass"))
+            })
+            .map(|x| format!(" The rule: {x}."))
+            .unwrap_or_default();
         let filt = match cutoff {
             Some(fc) => format!(
                 "thin lines raw, thick lines low-pass filtered (2nd-order Butterworth forward and back, \
-                 cut-off {fc} Hz)"
+                 cut-off {fc:.0} Hz).{rule}"
             ),
-            None => {
-                "raw histories; the run had no low-pass cut-off (filter_cutoff_hz not set), so no \
-                     filtered history is shown"
-                    .into()
-            }
+            None => format!(
+                "raw histories; the run had no low-pass cut-off, so no filtered history is shown.{rule}"
+            ),
         };
         r.figure(fig, &format!("Sensor pressure histories: {filt}"), 160.0);
         let mut fig = Figure::new(
