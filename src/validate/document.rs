@@ -113,11 +113,14 @@ pub fn outline(s: &Suite, commit: &str) -> Result<Outline> {
             });
         }
         for f in &c.figures {
-            blocks.push(Block::Svg {
-                svg: plot::svg(f)?,
-                caption: f.title.clone(),
-                width_mm: 160.0,
-            });
+            match plot::svg(f) {
+                Ok(svg) => blocks.push(Block::Svg {
+                    svg,
+                    caption: f.title.clone(),
+                    width_mm: 160.0,
+                }),
+                Err(e) => blocks.push(Block::Strong(format!("Not drawn: {e}"))),
+            }
         }
     }
     Ok(Outline {

@@ -175,7 +175,7 @@ pub fn run_suite(
     progress: &mut dyn FnMut(&Case),
 ) -> Suite {
     let start = Instant::now();
-    let memo = run::Memo::new(work);
+    let memo = run::Memo::new(work, mode);
     let results = cases
         .iter()
         .map(|c| {

@@ -77,7 +77,7 @@ pub fn speed_trend(case: &Case, memo: &Memo) -> Result<Outcome> {
             x_label: "speed (m/s)".into(),
             y_label: "station (fraction of Lpp aft of the FP)".into(),
             series: vec![Series {
-                label: format!("analytic 2D+t ({})", a.fidelity),
+                label: format!("2D+t ({})", a.fidelity),
                 reference: false,
                 points: pts,
             }],

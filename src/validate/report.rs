@@ -215,11 +215,14 @@ pub fn write(
             put(cd.join("table.csv"), &text)?;
         }
         for f in &c.figures {
-            put(cd.join(format!("{}.svg", f.name)), &plot::svg(f)?)?;
-            put(
-                cd.join(format!("{}.csv", f.name)),
-                &(header.to_string() + &plot::csv(f)),
-            )?;
+            // A figure that cannot be drawn honestly is left out here; the PDF says why.
+            if let (Ok(svg), Ok(csv)) = (plot::svg(f), plot::csv(f)) {
+                put(cd.join(format!("{}.svg", f.name)), &svg)?;
+                put(
+                    cd.join(format!("{}.csv", f.name)),
+                    &(header.to_string() + &csv),
+                )?;
+            }
         }
     }
     Ok(files)

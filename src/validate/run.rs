@@ -38,17 +38,38 @@ pub const KINDS: &[&str] = &[
 #[derive(Default)]
 pub struct Memo {
     runs: Mutex<HashMap<String, Arc<sph::RunResult>>>,
+    assessments: Mutex<HashMap<String, Arc<crate::assess::Assessment>>>,
     /// Work folder (`None`: the system's temporary folder).
     pub work: Option<std::path::PathBuf>,
+    /// Whether the suite runs in `--full` mode (the ship cases then assess with SPH, `screen`).
+    pub full: bool,
 }
 
 impl Memo {
-    /// A memo whose assessments are written under `work`.
-    pub fn new(work: std::path::PathBuf) -> Self {
+    /// A memo whose assessments are written under `work`, for a suite run in `mode`.
+    pub fn new(work: std::path::PathBuf, mode: Mode) -> Self {
         Memo {
-            runs: Mutex::default(),
             work: Some(work),
+            full: matches!(mode, Mode::Full),
+            ..Default::default()
         }
+    }
+
+    /// The assessment under `key`, computed by `f` the first time (the ship cases share one).
+    pub fn assessment(
+        &self,
+        key: String,
+        f: impl FnOnce() -> Result<crate::assess::Assessment>,
+    ) -> Result<Arc<crate::assess::Assessment>> {
+        if let Some(a) = self.assessments.lock().map_err(poisoned)?.get(&key) {
+            return Ok(a.clone());
+        }
+        let a = Arc::new(f()?);
+        self.assessments
+            .lock()
+            .map_err(poisoned)?
+            .insert(key, a.clone());
+        Ok(a)
     }
 
     /// The work folder of one case.

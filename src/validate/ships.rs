@@ -4,6 +4,7 @@
 //! and Wagner's 4.2 kPa.
 
 use std::path::Path;
+use std::sync::Arc;
 
 use super::run::{Memo, csv_rows, toml_number, toml_table};
 use super::{Case, Figure, Mode, Outcome, Reference, Series, Table};
@@ -13,19 +14,44 @@ use crate::hull::Hull;
 use crate::hull::Hydrostatics;
 use crate::sea::SeaState;
 
-/// The analytic 2D+t assessment of the case's `hull` under `sea` at `loading`, written under the work
-/// folder.
-pub(super) fn assessment(case: &Case, sea: &Path, memo: &Memo) -> Result<Assessment> {
-    let hull = Hull::from_file(&case.file("hull")?)?;
-    let sea = SeaState::from_file(sea)?;
-    let settings = Settings {
-        loading: Some(case.text("loading")?),
-        fidelity: Fidelity::Analytic,
-        ..Settings::default()
+/// The fidelity of the ship cases' assessments: analytic in `--quick`, `screen` (SPH at the default
+/// resolution for the governing event of each station, with its convergence companion) in `--full`.
+pub(super) fn ship_fidelity(memo: &Memo) -> Fidelity {
+    if memo.full {
+        Fidelity::Screen
+    } else {
+        Fidelity::Analytic
+    }
+}
+
+/// The 2D+t assessment of the case's `hull` under `sea` at `loading` ([`ship_fidelity`]), written under
+/// the work folder; computed once per suite for each hull, sea, loading and fidelity.
+pub(super) fn assessment(case: &Case, sea: &Path, memo: &Memo) -> Result<Arc<Assessment>> {
+    let hull_file = case.file("hull")?;
+    let loading = case.text("loading")?;
+    let fidelity = ship_fidelity(memo);
+    let stem = |p: &Path| {
+        p.file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default()
     };
-    let out = memo.work_dir(&case.name);
-    let (a, _) = assess::run(&hull, &sea, &settings, &out, &Default::default())?;
-    Ok(a)
+    let name = format!(
+        "assess-{}-{}-{loading}-{fidelity:?}",
+        stem(&hull_file),
+        stem(sea)
+    );
+    memo.assessment(name.clone(), || {
+        let hull = Hull::from_file(&hull_file)?;
+        let sea = SeaState::from_file(sea)?;
+        let settings = Settings {
+            loading: Some(loading),
+            fidelity,
+            ..Settings::default()
+        };
+        let out = memo.work_dir(&name);
+        let (a, _) = assess::run(&hull, &sea, &settings, &out, &Default::default())?;
+        Ok(a)
+    })
 }
 
 /// Published particulars of the Ochi model (`model` table of ochi1958_vform.toml) against the
