@@ -159,9 +159,10 @@ pub fn run(
     let plan = plan::plan(hull, sea, s)?;
     std::fs::create_dir_all(out).map_err(|e| Error::io(out, e))?;
     cache::sweep(out);
+    // In parallel over events, collected in plan order (independent of the thread count).
     let computed: Vec<Option<Result<analytic::Estimate>>> = plan
         .events
-        .iter()
+        .par_iter()
         .map(|e| e.entry.as_ref().map(analytic::estimate))
         .collect();
     let analytic_errors: Vec<Option<String>> = computed
