@@ -65,6 +65,38 @@ fn profile_from_motions(saved: &Saved, e: &Value) -> Option<Vec<(f64, f64)>> {
     (!pts.is_empty()).then_some(pts)
 }
 
+/// Palette index of the contact-transient marker (grey).
+const TRANSIENT_COLOUR: usize = 7;
+
+/// Draw the end of the contact transient at `t_tr` (s) as a grey vertical line across the data of `fig`,
+/// and say what it means (for the caption; empty when there is none).
+fn mark_transient(fig: &mut Figure, t_tr: Option<f64>) -> String {
+    let (lo, hi) = fig
+        .series
+        .iter()
+        .flat_map(|s| s.points.iter().map(|p| p.1))
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), y| {
+            (a.min(y), b.max(y))
+        });
+    match t_tr {
+        Some(t) if t > 0.0 && lo.is_finite() && hi > lo => {
+            fig.series.push(Series::new(
+                format!("end of contact transient ({:.1} ms)", t * 1e3),
+                vec![(t * 1e3, lo), (t * 1e3, hi)],
+                TRANSIENT_COLOUR,
+                Mark::ThinLine,
+            ));
+            format!(
+                " The grey vertical line ends the contact transient ({:.1} ms after keel entry): peaks \
+                 before it (the acoustic contact spike, of order rho c0 V) are not reported as slamming \
+                 peaks.",
+                t * 1e3
+            )
+        }
+        _ => String::new(),
+    }
+}
+
 fn series_of(run: &Run, col: &str, scale: f64) -> Vec<(f64, f64)> {
     match (run.column("time_s"), run.column(col)) {
         (Some(t), Some(x)) => t
@@ -191,6 +223,8 @@ pub fn section(r: &mut Report, saved: &Saved) {
                     .push(Series::new(format!("{n} filtered"), pts, k, Mark::Line));
             }
         }
+        let t_tr = run.summary["contact_transient_end_s"].as_f64();
+        let transient = mark_transient(&mut fig, t_tr);
         fig.size = (800, 400);
         let rule = setup
             .get("notes")
@@ -211,7 +245,11 @@ pub fn section(r: &mut Report, saved: &Saved) {
                 "raw histories; the run had no low-pass cut-off, so no filtered history is shown.{rule}"
             ),
         };
-        r.figure(fig, &format!("Sensor pressure histories: {filt}"), 160.0);
+        r.figure(
+            fig,
+            &format!("Sensor pressure histories: {filt}{transient}"),
+            160.0,
+        );
         let mut fig = Figure::new(
             &format!("section_force_{tag}"),
             &format!("Vertical section force, station {f}"),
@@ -224,8 +262,13 @@ pub fn section(r: &mut Report, saved: &Saved) {
             0,
             Mark::Line,
         ));
+        let transient = mark_transient(&mut fig, t_tr);
         fig.size = (800, 300);
-        r.figure(fig, "Vertical force per metre on the section", 150.0);
+        r.figure(
+            fig,
+            &format!("Vertical force per metre on the section.{transient}"),
+            150.0,
+        );
         match &run.peak_png {
             Some(png) => {
                 let name = format!("peak_pressure_{tag}.png");
