@@ -89,6 +89,12 @@ fn is_number(s: &str) -> bool {
     !t.is_empty() && (t.parse::<f64>().is_ok() || t == "-")
 }
 
+/// Characters in the widest cells of a table's columns, summed, above which it is set to the text width.
+const WIDE_TABLE_CHARS: usize = 110;
+
+/// Characters in the widest cell of a text column above which it may take the remaining width.
+const WIDE_TEXT_CHARS: usize = 40;
+
 /// The typst preamble: A4, margins, the bundled font, numbered headings, table style.
 const PREAMBLE: &str = r#"#set document(date: none)
 #set page(paper: "a4", margin: (x: 20mm, top: 20mm, bottom: 22mm))
@@ -206,8 +212,33 @@ fn block_source(b: &Block, s: &mut String, files: &mut Vec<(String, Vec<u8>)>) {
                     cells.push(typst_string(r.get(j).map_or("", String::as_str)));
                 }
             }
+            // In a table too wide for the text width, the wide text columns share the width left by the
+            // others (so that they wrap, and the others do not).
+            let widest = |j: usize| {
+                rows.iter()
+                    .map(|r| r.get(j).map_or(0, |c| c.chars().count()))
+                    .chain(std::iter::once(header[j].chars().count()))
+                    .max()
+                    .unwrap_or(0)
+            };
+            let total: usize = (0..header.len()).map(widest).sum();
+            let columns = if total > WIDE_TABLE_CHARS && !header.is_empty() {
+                // Each wide text column gets a share of the free width in proportion to its text.
+                let cols: Vec<String> = (0..n)
+                    .map(|j| {
+                        if j < header.len() && align[j] == "left" && widest(j) > WIDE_TEXT_CHARS {
+                            format!("{}fr", widest(j))
+                        } else {
+                            "auto".to_string()
+                        }
+                    })
+                    .collect();
+                format!("({}), inset: (x: 3pt, y: 1.6pt)", cols.join(", "))
+            } else {
+                n.to_string()
+            };
             s.push_str(&format!(
-                "#figure(kind: table, caption: {}, table(columns: {n}, align: ({}), table.header({}), {}))\n\n",
+                "#figure(kind: table, caption: {}, table(columns: {columns}, align: ({}), table.header({}), {}))\n\n",
                 typst_string(caption),
                 align.join(", "),
                 cells[..n].join(", "),

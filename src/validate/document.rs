@@ -28,8 +28,7 @@ pub fn outline(s: &Suite, commit: &str) -> Result<Outline> {
     let mut blocks = vec![Block::Table {
         caption: "Validation summary: one row per case".into(),
         header: [
-            "case",
-            "quantity",
+            "case: quantity",
             "computed",
             "reference",
             "error",
@@ -42,8 +41,7 @@ pub fn outline(s: &Suite, commit: &str) -> Result<Outline> {
             .into_iter()
             .map(|r| {
                 vec![
-                    r.case,
-                    r.quantity,
+                    format!("{}: {}", r.case, r.quantity),
                     r.computed,
                     r.reference,
                     r.error,
