@@ -77,6 +77,11 @@ fn sph_event(
         .entry
         .as_ref()
         .ok_or_else(|| Error::Invalid("no water entry to run".into()))?;
+    if case.immersion_m > 0.0 {
+        return Err(Error::Invalid(
+            "SPH of a flare event (section immersed at the start) is not available yet".into(),
+        ));
+    }
     let section = Section::from_half_points(case.half_points.clone())?;
     let setup = sph::case::resolve(
         &e.label(),
@@ -215,6 +220,8 @@ pub fn run(
             wave: e.wave.clone(),
             slam_flag: e.flag,
             entry_velocity_m_per_s: e.entry_velocity_m_s,
+            entry_kind: e.entry.as_ref().map(|_| plan::kind_of(e.flare.as_ref())),
+            flare_event: e.flare.clone(),
             design_event: e.design.clone(),
             analytic: estimates[i].clone(),
             run_folder: sph.as_ref().map(|r| format!("cache/{}", r.key)),
