@@ -77,18 +77,17 @@ fn sph_event(
         .entry
         .as_ref()
         .ok_or_else(|| Error::Invalid("no water entry to run".into()))?;
-    if case.immersion_m > 0.0 {
-        return Err(Error::Invalid(
-            "SPH of a flare event (section immersed at the start) is not available yet".into(),
-        ));
-    }
     let section = Section::from_half_points(case.half_points.clone())?;
+    let overrides = sph::Overrides {
+        initial_immersion: (case.immersion_m > 0.0).then_some(case.immersion_m),
+        ..overrides.clone()
+    };
     let setup = sph::case::resolve(
         &e.label(),
         &section,
         &case.motion,
         case.sensors.clone(),
-        overrides,
+        &overrides,
     )?;
     let key = cache::key(&setup, &study)?;
     if use_cache && let Some(r) = cache::lookup(out, &key) {
