@@ -116,9 +116,25 @@ pub(crate) fn sensor_peak(events: &[&EventResult], name: &str) -> Option<(f64, &
         .max_by(|a, b| a.0.total_cmp(&b.0))
 }
 
-/// The relative motion of a planned event's station in its wave.
+/// The relative motion of a planned event's station in its wave: the plan's own (the one its events
+/// come from), or strip theory again for an event the plan's regular waves do not hold.
 fn relative_motion_of(plan: &Plan, k: usize) -> Result<(RelativeMotion, f64)> {
     let e = &plan.events[k];
+    let planned = plan
+        .motions
+        .speeds
+        .iter()
+        .filter(|sp| sp.speed_m_s == e.speed_m_s)
+        .flat_map(|sp| sp.regular.iter().filter(|w| w.wave == e.wave))
+        .find_map(|w| {
+            w.stations
+                .iter()
+                .find(|st| (st.aft_of_fp - e.station).abs() < 1e-9)
+                .map(|st| (st.relative_motion, w.omega_e))
+        });
+    if let Some(found) = planned {
+        return Ok(found);
+    }
     let r = strip_theory::respond(
         &plan.model,
         e.wave_omega_rad_s,

@@ -184,4 +184,52 @@ mod tests {
         );
         assert!(water_reaches(&rm, 1.0, 1.0, 0.1, 0.4).is_none());
     }
+
+    #[test]
+    fn an_immersed_start_by_hand() {
+        // s = 0.2 cos(t), V = -Ds/Dt = 0.2 sin(t) (w_e = 1): with T = 0.3 the keel stays in; the event
+        // starts at t = 0 with the keel 0.1 deep and runs until V reverses at t = pi (keel 0.5 deep).
+        let rm = RelativeMotion {
+            x: 0.0,
+            motion: Complex::new(0.2, 0.0),
+            velocity: Complex::new(0.0, 0.2),
+        };
+        let e = immersed_start(&rm, 1.0, 1.0, 0.3, 10.0, 21).unwrap();
+        assert!((e.immersion_m - 0.1).abs() < 1e-12);
+        assert!(e.start_time_s.abs() < 1e-12);
+        let first = e.samples[0];
+        let last = e.samples[20];
+        assert!(first.velocity.abs() < 1e-12 && (first.penetration - 0.1).abs() < 1e-12);
+        let pi = std::f64::consts::PI;
+        assert!(
+            (last.t - pi).abs() < 2.0 * pi / 2000.0 + 1e-12,
+            "{}",
+            last.t
+        );
+        assert!((last.penetration - 0.5).abs() < 1e-4);
+        assert!((e.samples[10].velocity - 0.2 * e.samples[10].t.sin()).abs() < 1e-12);
+        // the keel emerges with T = 0.15: a keel entry, not this
+        assert!(immersed_start(&rm, 1.0, 1.0, 0.15, 10.0, 21).is_none());
+    }
+
+    #[test]
+    fn struck_sensors_are_the_dry_ones_the_water_reaches() {
+        // a box side: y = 0.2 from z = 0 to 1; panels 0.1 wide centred 0.2 + z along the girth
+        let pts = [[0.0, 0.0], [0.2, 0.0], [0.2, 1.0]];
+        let at = |name: &str, z: f64| crate::sph::SensorSpec {
+            name: name.into(),
+            s_m: 0.2 + z,
+            width_m: 0.1,
+        };
+        let s = [
+            at("below", 0.3),
+            at("straddling", 0.5),
+            at("reached", 0.6),
+            at("dry", 0.8),
+        ];
+        let hit = struck_sensors(&pts, &s, 0.5, 0.2);
+        let names: Vec<&str> = hit.iter().map(|h| h.0.as_str()).collect();
+        assert_eq!(names, ["straddling", "reached"]);
+        assert!((hit[1].1 - 0.55).abs() < 1e-12);
+    }
 }

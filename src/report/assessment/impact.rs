@@ -117,13 +117,29 @@ pub fn section(r: &mut Report, saved: &Saved) {
         };
         let e = &saved.events()[i];
         let tag = format!("{}_{}", f, slug(text(e, "wave")));
-        r.para(&format!(
-            "Governing event: {} m/s in wave {}, entry velocity {:.3} m/s ({}).",
-            num(e, "speed_m_per_s").unwrap_or(f64::NAN),
-            text(e, "wave"),
-            num(e, "entry_velocity_m_per_s").unwrap_or(f64::NAN),
-            text(e, "slam_flag").replace('-', " ")
-        ));
+        match num(&e["flare_event"], "immersion_m") {
+            Some(d0) => r.para(&format!(
+                "Governing event: {} m/s in wave {}, a flare event ({}): the keel stays immersed, the section \
+                 starts at its least immersion d0 = {d0:.3} m in water at rest (the wave orbital flow and the \
+                 flow of the earlier cycle are neglected) and time is counted from that start, not from a keel \
+                 entry. The undisturbed water reaches the first panel above the still-water line at {} m/s, \
+                 {} s after the start.",
+                num(e, "speed_m_per_s").unwrap_or(f64::NAN),
+                text(e, "wave"),
+                text(e, "entry_kind"),
+                num(&e["flare_event"], "impact_velocity_m_per_s")
+                    .map_or("-".into(), |v| format!("{v:.3}")),
+                num(&e["flare_event"], "impact_delay_after_start_s")
+                    .map_or("-".into(), |v| format!("{v:.3}")),
+            )),
+            None => r.para(&format!(
+                "Governing event: {} m/s in wave {}, entry velocity {:.3} m/s ({}).",
+                num(e, "speed_m_per_s").unwrap_or(f64::NAN),
+                text(e, "wave"),
+                num(e, "entry_velocity_m_per_s").unwrap_or(f64::NAN),
+                text(e, "slam_flag").replace('-', " ")
+            )),
+        }
         let Some(run) = &saved.runs[i] else {
             if let Some(pts) = profile_from_motions(saved, e) {
                 let mut fig = Figure::new(
