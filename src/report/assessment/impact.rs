@@ -117,6 +117,11 @@ pub fn section(r: &mut Report, saved: &Saved) {
         };
         let e = &saved.events()[i];
         let tag = format!("{}_{}", f, slug(text(e, "wave")));
+        let t_axis = if e["flare_event"].is_object() {
+            "time since the start at least immersion (ms)"
+        } else {
+            "time since keel entry (ms)"
+        };
         match num(&e["flare_event"], "immersion_m") {
             Some(d0) => r.para(&format!(
                 "Governing event: {} m/s in wave {}, a flare event ({}): the keel stays immersed, the section \
@@ -145,7 +150,7 @@ pub fn section(r: &mut Report, saved: &Saved) {
                 let mut fig = Figure::new(
                     &format!("entry_velocity_{tag}"),
                     &format!("Entry-velocity profile, station {f}"),
-                    "time since keel entry (ms)",
+                    t_axis,
                     "downward velocity (m/s)",
                 );
                 fig.series
@@ -169,7 +174,7 @@ pub fn section(r: &mut Report, saved: &Saved) {
         let mut fig = Figure::new(
             &format!("entry_velocity_{tag}"),
             &format!("Entry-velocity profile, station {f}"),
-            "time since keel entry (ms)",
+            t_axis,
             "downward velocity (m/s)",
         );
         fig.series.push(Series::new(
@@ -189,7 +194,7 @@ pub fn section(r: &mut Report, saved: &Saved) {
         let mut fig = Figure::new(
             &format!("pressure_history_{tag}"),
             &format!("Sensor pressures, station {f}"),
-            "time since keel entry (ms)",
+            t_axis,
             "pressure (kPa)",
         );
         for (k, n) in sensors.iter().enumerate() {
@@ -223,7 +228,7 @@ pub fn section(r: &mut Report, saved: &Saved) {
         let mut fig = Figure::new(
             &format!("section_force_{tag}"),
             &format!("Vertical section force, station {f}"),
-            "time since keel entry (ms)",
+            t_axis,
             "section force (kN/m)",
         );
         fig.series.push(Series::new(
