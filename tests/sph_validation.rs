@@ -64,6 +64,7 @@ fn still_tank(dp: f64) -> Setup {
         damping_zone: 0.0,
         mirror: true,
         t_end: 3.0,
+        initial_immersion: 0.0,
         sensors: Vec::new(),
         snapshot_interval: None,
         filter_cutoff_hz: None,

@@ -14,6 +14,24 @@
 //! water-hammer pressure rho c_w V of a flat impact, Korobkin & Pukhnachov 1988, Annu. Rev. Fluid Mech.
 //! 20) and, in reality, by air cushioning. Callers report the acoustic value flagged, never an infinite one.
 //!
+//! **Initial immersion** ([`EntryHistory::new_immersed`], the flare event of a section whose keel stays
+//! in the water). The section starts immersed to d0 (keel depth) in water at rest with a flat surface;
+//! the body below the initial waterline is wetted from the start (half-width b0, the waterline
+//! half-breadth at d0). Linearised as Wagner's problem is, that wetted part is a flat plate |y| < b0 on
+//! the initial surface, and the Wagner condition (with the free-surface elevation counted from the
+//! start) is applied to the body above the waterline, f~(y) = max(f(y) - d0, 0)
+//! ([`Profile::above`]): with h the keel depth (h = d0 at the start),
+//!
+//!   h - d0 = (2/pi) integral_0^{pi/2} f~(c sin theta) d theta,   c >= b0.
+//!
+//! This follows from Wagner's condition in its integral form, integral_0^c (dh/dc~) c / sqrt(c^2 - c~^2)
+//! dc~ = f~(c), with dh/dc~ = 0 for c~ < b0 (the plate is wetted at once, at rest); its Abel inversion
+//! is the formula above (the derivation is the one of Faltinsen 2005, ch. 8, with the initial wetted
+//! width; the idealisation, not a published formula, so stated here). For d0 = 0 it is the keel-entry
+//! condition, exactly. At the start d/dc of the right side vanishes at c = b0, so dc/dt is unbounded: the
+//! first sample is flagged like the acoustic stage (an artefact of the impulsive start of the linearised
+//! flow, not an impact); the callers say so. The pressures of the MLM use the actual body f and h.
+//!
 //! **Input samples.** Times must increase; a sample whose time is not larger than the previous kept one
 //! (a duplicate or a step back) is skipped. Non-finite speeds are refused. The history ends where the
 //! wetted half-width reaches the end of f (chine, widest point) or where V turns negative (exit is not
@@ -46,6 +64,10 @@ pub struct EntryState {
 #[derive(Debug, Clone)]
 pub struct EntryHistory {
     pub profile: Profile,
+    /// The body the Wagner condition sees: f, or f~ above the initial waterline for an immersed start.
+    pub wetting: Profile,
+    /// Keel depth at the start, d0 (m; 0 for a keel entry).
+    pub immersion: f64,
     pub states: Vec<EntryState>,
     /// Why the history ends before the last sample, if it does.
     pub stopped: Option<String>,
@@ -56,7 +78,14 @@ pub struct EntryHistory {
 impl EntryHistory {
     /// States of the section `half` (starboard half, keel first) moving down with speed `v` at times `t`.
     pub fn new(half: &[[f64; 2]], t: &[f64], v: &[f64]) -> Result<Self> {
+        Self::new_immersed(half, 0.0, t, v)
+    }
+
+    /// States of the section `half` starting immersed to the keel depth `d0` in water at rest (see the
+    /// module notes), moving down with speed `v` at times `t`; `d0 = 0` is [`EntryHistory::new`].
+    pub fn new_immersed(half: &[[f64; 2]], d0: f64, t: &[f64], v: &[f64]) -> Result<Self> {
         let profile = Profile::from_half_points(half)?;
+        let wetting = profile.above(d0)?;
         if t.len() != v.len() {
             return Err(Error::Invalid(format!(
                 "entry history: {} times but {} speeds",
@@ -85,24 +114,26 @@ impl EntryHistory {
         // Running maximum of d(c) on a grid through every vertex of f.
         let y_end = profile.y_end();
         let mut c_grid: Vec<f64> = (0..=2000).map(|k| y_end * k as f64 / 2000.0).collect();
-        c_grid.extend(profile.points().iter().map(|p| p[0]));
+        c_grid.extend(wetting.points().iter().map(|p| p[0]));
         c_grid.sort_by(f64::total_cmp);
         c_grid.dedup();
         let mut d_max = Vec::with_capacity(c_grid.len());
         let mut run = 0.0f64;
         for &c in &c_grid {
-            run = run.max(profile.wagner_depth(c).unwrap_or(run));
+            run = run.max(wetting.wagner_depth(c).map_or(run, |d| d + d0));
             d_max.push(run);
         }
         let mut out = Self {
             profile,
+            wetting,
+            immersion: d0,
             states: Vec::new(),
             stopped: None,
             c_grid,
             d_max,
         };
         let dv = (ts.len() >= 2).then(|| Pchip::new(&ts, &vs));
-        let mut h = 0.0;
+        let mut h = d0;
         for k in 0..ts.len() {
             if k > 0 {
                 h += 0.5 * (ts[k] - ts[k - 1]) * (vs[k] + vs[k - 1]);
@@ -160,7 +191,12 @@ impl EntryHistory {
         let (mut lo, mut hi) = (self.c_grid[k - 1], self.c_grid[k]);
         for _ in 0..80 {
             let mid = 0.5 * (lo + hi);
-            if self.profile.wagner_depth(mid).unwrap_or(f64::INFINITY) > h {
+            if self
+                .wetting
+                .wagner_depth(mid)
+                .map_or(f64::INFINITY, |d| d + self.immersion)
+                > h
+            {
                 hi = mid;
             } else {
                 lo = mid;
@@ -178,7 +214,7 @@ impl EntryHistory {
     /// The state at penetration h with speed v and acceleration v_dot, or `None` past the end of f.
     pub fn state(&self, t: f64, h: f64, v: f64, v_dot: f64) -> Option<EntryState> {
         let c = self.half_width(h)?;
-        let rate = self.profile.wagner_depth_rate(c)?;
+        let rate = self.wetting.wagner_depth_rate(c)?;
         let c_dot = if v <= 0.0 {
             Some(0.0)
         } else if v >= WATER_SOUND_SPEED * rate {

@@ -13,6 +13,16 @@
 //! It holds for moderate deadrise and before flow separation at a knuckle or at the widest point of a
 //! bulb; the estimate stops there (`stopped` says why).
 //!
+//! **Initial immersion** ([`estimate_immersed`]; the flare event of a station whose keel stays in the
+//! water). The section starts immersed to the keel depth d0 in water at rest: c starts at the waterline
+//! half-breadth b0 and follows the Wagner condition applied to the body above the initial waterline
+//! ([`crate::analytic::entry_kinematics`], module notes); the force is the same d/dt (rho pi c^2 V / 2)
+//! of the flat plate of half-width c (the added mass of the wetted width; buoyancy and the hydrostatic
+//! pressure of the immersed part are not included, as in the keel-entry estimate). The first sample (c =
+//! b0, dc/dt unbounded) is the impulsive start of the idealisation, flagged like the acoustic stage and
+//! left out of the peaks. For large penetration compared with d0 the estimate tends to the keel-entry one
+//! (checked for a wedge in the tests); d0 = 0 is the keel-entry estimate exactly.
+//!
 //! **Flat keel, acoustic stage.** A flat keel of half-width c_f is wetted at once on contact: Wagner's
 //! c jumps to c_f, c' and hence force and pressure are unbounded (flat-plate impact). While c' would be
 //! at least the sound speed of water c_w (always at first contact of a flat keel, and just after it),
@@ -79,7 +89,19 @@ pub fn penetration_for_half_width(half: &[[f64; 2]], c: f64) -> Option<f64> {
 /// reaches the chine or widest point of the section, or where v turns negative. Errors for a section
 /// the model cannot take (contour below its keel, no breadth), mismatched lengths or non-finite speeds.
 pub fn estimate(half: &[[f64; 2]], t: &[f64], v: &[f64], rho: f64) -> Result<WagnerEstimate> {
-    let hist = EntryHistory::new(half, t, v)?;
+    estimate_immersed(half, 0.0, t, v, rho)
+}
+
+/// [`estimate`] for a section that starts immersed to the keel depth `d0` in water at rest (module
+/// notes); `d0 = 0` is [`estimate`].
+pub fn estimate_immersed(
+    half: &[[f64; 2]],
+    d0: f64,
+    t: &[f64],
+    v: &[f64],
+    rho: f64,
+) -> Result<WagnerEstimate> {
+    let hist = EntryHistory::new_immersed(half, d0, t, v)?;
     let mut out = WagnerEstimate {
         flat_keel_half_width: hist.profile.flat_keel_half_width(),
         stopped: hist.stopped.clone(),
@@ -103,7 +125,14 @@ pub fn estimate(half: &[[f64; 2]], t: &[f64], v: &[f64], rho: f64) -> Result<Wag
         out.peak_pressure.push(p);
         out.acoustic_limited.push(limited);
     }
-    if out.flat_keel_half_width > 0.0 {
+    if d0 > 0.0 {
+        out.notes.push(format!(
+            "the section starts immersed to {d0:.4} m in water at rest, wetted to the waterline half-breadth \
+             {:.4} m; the first sample (impulsive start of the linearised flow, unbounded dc/dt) is flagged \
+             and left out of the peaks",
+            hist.wetting.flat_keel_half_width()
+        ));
+    } else if out.flat_keel_half_width > 0.0 {
         out.notes.push(format!(
             "flat keel of half-width {:.4} m: Wagner's wetted width jumps to it at contact and its force and \
              pressure are unbounded there (flat-plate impact); the acoustic values rho c_w V (c_w = {} m/s) \
@@ -112,7 +141,7 @@ pub fn estimate(half: &[[f64; 2]], t: &[f64], v: &[f64], rho: f64) -> Result<Wag
         ));
     }
     let n_ac = out.acoustic_limited.iter().filter(|&&a| a).count();
-    if n_ac > 0 {
+    if n_ac > 0 && d0 == 0.0 {
         out.notes.push(format!(
             "{n_ac} of {} samples carry the acoustic limit rho c_w V instead of Wagner's force or peak \
              pressure (incompressible theory out of range there)",
@@ -222,6 +251,45 @@ mod tests {
         assert!(all_finite(&e));
         assert!(e.half_width.iter().all(|&c| c <= 0.12));
         assert!(e.stopped.as_deref().unwrap().contains("separation"));
+    }
+
+    #[test]
+    fn immersed_wedge_tends_to_the_keel_entry_wedge() {
+        // 30 deg wedge at 2 m/s, started with the keel 5 mm under the surface at rest: once the
+        // penetration since the start is large against d0 the force and the wetted width approach the
+        // keel-entry values at the same keel depth (Wagner similarity), and d0 = 0 is the keel entry.
+        let beta = 30f64.to_radians();
+        let s = [[0.0, 0.0], [3.0, 3.0 * beta.tan()]];
+        let t = times(2001, 1e-4);
+        let v = vec![2.0; t.len()];
+        let d0 = 0.005;
+        let dry = estimate(&s, &t, &v, 1000.0).unwrap();
+        let wet = estimate_immersed(&s, d0, &t, &v, 1000.0).unwrap();
+        let same = estimate_immersed(&s, 0.0, &t, &v, 1000.0).unwrap();
+        assert_eq!(same.force, dry.force);
+        assert_eq!(same.half_width, dry.half_width);
+        assert!(wet.acoustic_limited[0] && !wet.acoustic_limited[1]);
+        assert!((wet.half_width[0] - d0 / beta.tan()).abs() < 1e-9);
+        // at the end the keel is d0 + 0.4 m deep: compare with the keel entry at the same keel depth
+        let k = wet.t.len() - 1;
+        let h = wet.penetration[k];
+        assert!((h - (d0 + 0.4)).abs() < 1e-9);
+        let c = wagner::wetted_half_width(beta, 2.0, h / 2.0).unwrap();
+        let f = wagner::force(beta, 1000.0, 2.0, h / 2.0).unwrap();
+        assert!(
+            (wet.half_width[k] / c - 1.0).abs() < 0.01,
+            "{} vs {c}",
+            wet.half_width[k]
+        );
+        assert!(
+            (wet.force[k] / f - 1.0).abs() < 0.02,
+            "{} vs {f}",
+            wet.force[k]
+        );
+        // early on (penetration comparable with d0) they differ: the immersed start is not a keel entry
+        let j = 25;
+        let cj = wagner::wetted_half_width(beta, 2.0, wet.penetration[j] / 2.0).unwrap();
+        assert!((wet.half_width[j] / cj - 1.0).abs() > 0.05);
     }
 
     #[test]

@@ -37,6 +37,13 @@
 //! order of the water sound speed) the model does not apply: the wetted part is given the water-hammer
 //! pressure rho c_w V, flagged in [`Mlm::acoustic`].
 //!
+//! **Initial immersion** ([`Mlm::new_immersed`]): the section starts immersed to the keel depth d0 in
+//! water at rest; c(t) comes from the Wagner condition of the body above the initial waterline
+//! ([`crate::analytic::entry_kinematics`]) and h is the keel depth (d0 at the start), so the formula above
+//! is unchanged, with f the actual body also on the part wetted from the start. The first sample (c at the
+//! waterline half-breadth, dc/dt unbounded) is the impulsive start of the idealisation and is flagged as
+//! in the acoustic stage. Hydrostatic pressure is not included (nor is it for a keel entry).
+//!
 //! Points of the contour that are not on f (a vertical step's face, the contour above a bulb's widest
 //! point) get no MLM pressure (zero).
 
@@ -59,7 +66,19 @@ impl Mlm {
     /// The MLM for the section `half` (starboard half, keel first at y = 0) moving down with speed `v` at
     /// times `t` (see [`EntryHistory::new`] for how samples are kept), water density `rho`.
     pub fn new(half: &[[f64; 2]], t: &[f64], v: &[f64], rho: f64) -> Result<Self> {
-        let hist = EntryHistory::new(half, t, v)?;
+        Self::new_immersed(half, 0.0, t, v, rho)
+    }
+
+    /// The MLM for the section `half` starting immersed to the keel depth `d0` in water at rest (module
+    /// notes); `d0 = 0` is [`Mlm::new`].
+    pub fn new_immersed(
+        half: &[[f64; 2]],
+        d0: f64,
+        t: &[f64],
+        v: &[f64],
+        rho: f64,
+    ) -> Result<Self> {
+        let hist = EntryHistory::new_immersed(half, d0, t, v)?;
         let z0 = half[0][1];
         let mut contour: Vec<[f64; 3]> = vec![[half[0][0], 0.0, 0.0]];
         for p in &half[1..] {

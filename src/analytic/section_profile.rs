@@ -235,6 +235,57 @@ impl Profile {
         Some(FRAC_2_PI * sum)
     }
 
+    /// The body above an initial waterline d0 above the keel, for a section that starts immersed to d0:
+    /// f~(y) = max(f(y) - d0, 0), heights from the initial waterline. The part below it is a flat "keel"
+    /// of half-width b0 (the waterline half-breadth at d0, where f crosses d0): in the linearised (Wagner)
+    /// problem the wetted part of a body immersed at rest is the flat plate |y| < b0 on the initial
+    /// surface. d0 = 0 gives f itself. Errors where d0 is negative or not below the top of f.
+    pub fn above(&self, d0: f64) -> Result<Self> {
+        if !(d0.is_finite() && d0 >= 0.0) {
+            return Err(Error::Invalid(format!(
+                "initial immersion must be a finite depth >= 0 m, got {d0}"
+            )));
+        }
+        if d0 == 0.0 {
+            return Ok(self.clone());
+        }
+        let top = self.pts[self.pts.len() - 1][1];
+        if d0 >= top {
+            return Err(Error::Invalid(format!(
+                "initial immersion {d0} m is not below the top of the section's profile ({top:.6} m above \
+                 the keel at y = {:.6} m): nothing is left to enter",
+                self.y_end()
+            )));
+        }
+        let mut pts: Vec<[f64; 2]> = vec![[0.0, 0.0]];
+        let mut push = |q: [f64; 2]| {
+            if pts.last().is_none_or(|l| l[0] != q[0] || l[1] != q[1]) {
+                pts.push(q);
+            }
+        };
+        for w in self.pts.windows(2) {
+            let (a, b) = (w[0], w[1]);
+            if (a[1] - d0) * (b[1] - d0) < 0.0 {
+                let f = (d0 - a[1]) / (b[1] - a[1]);
+                push([a[0] + f * (b[0] - a[0]), 0.0]);
+            }
+            push([b[0], (b[1] - d0).max(0.0)]);
+        }
+        let mut flat = 0.0;
+        for w in pts.windows(2) {
+            if w[0][1] == 0.0 && w[1][1] == 0.0 {
+                flat = w[1][0];
+            } else {
+                break;
+            }
+        }
+        Ok(Self {
+            pts,
+            flat,
+            end: self.end,
+        })
+    }
+
     /// Arc length from the keel along f to half-breadth y (vertical steps included).
     pub fn arc_length_to(&self, y: f64) -> f64 {
         let mut s = 0.0;
@@ -313,6 +364,23 @@ mod tests {
         assert!((keel_bar.height(1e-9).unwrap() - 0.05).abs() < 1e-9);
         assert!(keel_bar.wagner_depth_rate(0.0).unwrap().is_infinite());
         assert!((keel_bar.wagner_depth(1e-9).unwrap() - 0.05).abs() < 1e-6);
+    }
+
+    #[test]
+    fn the_body_above_an_initial_waterline() {
+        // 45 deg flank to y = 0.2, then a vertical step 0.2 -> 0.3, then flat-ish to y = 0.4
+        let p =
+            Profile::from_half_points(&[[0.0, 0.0], [0.2, 0.2], [0.2, 0.3], [0.4, 0.4]]).unwrap();
+        assert_eq!(p.above(0.0).unwrap().points(), p.points());
+        let a = p.above(0.1).unwrap();
+        assert_eq!(a.flat_keel_half_width(), 0.1);
+        assert!((a.height(0.3).unwrap() - 0.25).abs() < 1e-12);
+        assert_eq!(a.height(0.05), Some(0.0));
+        // across the step: f~ jumps from 0.1 to 0.2 at y = 0.2
+        let b = p.above(0.25).unwrap();
+        assert_eq!(b.flat_keel_half_width(), 0.2);
+        assert!((b.height(0.4).unwrap() - 0.15).abs() < 1e-12);
+        assert!(p.above(0.4).is_err() && p.above(-0.1).is_err());
     }
 
     #[test]

@@ -1,6 +1,9 @@
 //! The analytic estimate of an event: the generalised Wagner force of the section (Wagner 1932 with the
 //! wetting condition for the actual shape) and the modified Logvinovich (MLM; Korobkin 2004) mean pressure
-//! on every sensor panel, along the event's entry-velocity history v(t).
+//! on every sensor panel, along the event's entry-velocity history v(t). A flare event (keel immersed to
+//! d0 at the start) uses the same models with the initial immersion
+//! ([`generalised_wagner::estimate_immersed`], [`Mlm::new_immersed`]): wetted to the waterline
+//! half-breadth at the start, water at rest, the Wagner condition applied to the body above.
 
 use serde::{Deserialize, Serialize};
 
@@ -90,17 +93,24 @@ fn peak_outside(t: &[f64], x: &[f64], acoustic: &[bool]) -> crate::loads::peaks:
 /// Estimate an event's force and sensor pressures.
 pub fn estimate(case: &EntryCase) -> Result<Estimate> {
     let (t, v) = samples(&case.motion)?;
-    let w = generalised_wagner::estimate(&case.half_points, &t, &v, RHO)?;
+    let d0 = case.immersion_m;
+    let w = generalised_wagner::estimate_immersed(&case.half_points, d0, &t, &v, RHO)?;
     // Peaks of the models' own values: samples at the acoustic limit are the water-hammer bound.
     let (force_peak, force_time) = w.force_peak().unwrap_or((0.0, 0.0));
     let mut notes = w.notes.clone();
     if let Some(why) = &w.stopped {
         notes.push(format!("Wagner estimate stops early: {why}"));
     }
-    let mlm = Mlm::new(&case.half_points, &t, &v, RHO)?;
+    let mlm = Mlm::new_immersed(&case.half_points, d0, &t, &v, RHO)?;
     let times = mlm.times();
     let acoustic = mlm.acoustic();
-    if acoustic.iter().any(|&a| a) {
+    if d0 > 0.0 {
+        notes.push(
+            "immersed start: the first sample (impulsive start of the linearised flow) is left out of the \
+             sensor peaks; it is not an impact and no water-hammer bound is given"
+                .into(),
+        );
+    } else if acoustic.iter().any(|&a| a) {
         notes.push(
             "flat keel: the first samples are in the acoustic stage, where the MLM gives the water-hammer \
              pressure rho c_w V (an upper bound without air cushioning, not a slamming pressure)"
@@ -124,7 +134,7 @@ pub fn estimate(case: &EntryCase) -> Result<Estimate> {
             let bound = history
                 .iter()
                 .zip(&acoustic)
-                .filter(|(_, a)| **a)
+                .filter(|(_, a)| **a && d0 == 0.0)
                 .map(|(p, _)| *p)
                 .reduce(f64::max);
             SensorEstimate {

@@ -116,9 +116,25 @@ pub(crate) fn sensor_peak(events: &[&EventResult], name: &str) -> Option<(f64, &
         .max_by(|a, b| a.0.total_cmp(&b.0))
 }
 
-/// The relative motion of a planned event's station in its wave.
+/// The relative motion of a planned event's station in its wave: the plan's own (the one its events
+/// come from), or strip theory again for an event the plan's regular waves do not hold.
 fn relative_motion_of(plan: &Plan, k: usize) -> Result<(RelativeMotion, f64)> {
     let e = &plan.events[k];
+    let planned = plan
+        .motions
+        .speeds
+        .iter()
+        .filter(|sp| sp.speed_m_s == e.speed_m_s)
+        .flat_map(|sp| sp.regular.iter().filter(|w| w.wave == e.wave))
+        .find_map(|w| {
+            w.stations
+                .iter()
+                .find(|st| (st.aft_of_fp - e.station).abs() < 1e-9)
+                .map(|st| (st.relative_motion, w.omega_e))
+        });
+    if let Some(found) = planned {
+        return Ok(found);
+    }
     let r = strip_theory::respond(
         &plan.model,
         e.wave_omega_rad_s,
@@ -165,11 +181,21 @@ fn hermundstad(hull: &Hull, plan: &Plan, a: &Assessment) -> Result<Validation> {
     }
     let events: Vec<&EventResult> = here.iter().map(|&k| &a.events[k]).collect();
     let peak = sensor_peak(&events, &panel.name);
-    let why_none = "no water-entry event at this station: its keel stays in the water in this wave (the \
-                    assessment's events start at keel entry), so the panel pressure is not computed";
+    let flare_event = here.iter().find_map(|&k| plan.events[k].flare.as_ref());
+    let why_none = "no water-entry event at this station: neither does its keel emerge nor does the water \
+                    reach a sensor above the still-water line in this wave, so the panel pressure is not \
+                    computed";
+    let which = match flare_event {
+        Some(fe) => format!(
+            "the flare event (keel immersed to {:.4} m at least immersion, water at rest at the start: wave \
+             orbital flow and the flow of the earlier cycle neglected)",
+            fe.immersion_m
+        ),
+        None => "the events".into(),
+    };
     let pressure_note = |what: &str| match peak {
         Some((_, src)) => format!(
-            "computed: peak of sensor {} ({src}) over the events at {f} Lpp; reference: {what}",
+            "computed: peak of sensor {} ({src}) over {which} at {f} Lpp; reference: {what}",
             panel.name
         ),
         None => format!("{why_none}; reference: {what}"),
@@ -234,32 +260,73 @@ fn hermundstad(hull: &Hull, plan: &Plan, a: &Assessment) -> Result<Validation> {
         source: HM_SOURCE.into(),
         note: v_note + "; reference: from the measured relative velocity (Veen)",
     });
-    let delay = match (hit, keel) {
-        (Some(h), Some(k)) => {
-            Some((h.time_s - k.time_s).rem_euclid(2.0 * std::f64::consts::PI / omega_e))
-        }
-        _ => None,
+    // The bound of linear strip theory: s(t) = |s_a| cos(w_e t + phi) rises at most at |s_a| w_e.
+    let amp = rm.motion.norm() * e.wave_amplitude_m;
+    let v_ref = num("reported_comparisons", "flare_impact_speed_m_s")?;
+    let bound = amp * omega_e;
+    out.comparisons.push(Comparison {
+        quantity: format!(
+            "largest relative velocity linear strip theory can give at {f} Lpp, |s_a| w_e"
+        ),
+        computed: Some(bound),
+        reference: v_ref,
+        unit: "m/s",
+        source: HM_SOURCE.into(),
+        note: format!(
+            "|s_a| = {amp:.4} m (local draft {:.4} m), w_e = {omega_e:.3} rad/s; the amplitude of the \
+             relative velocity Ds/Dt with its forward-speed terms is {:.3} m/s; reference: the measured \
+             relative velocity reached at least {v_ref} m/s at flare impact. Linear strip theory's relative \
+             velocity here is at most {:.0} % of that ({}), so a slamming pressure, which scales with the \
+             square of the speed, is at most {:.0} % of one at the measured speed{}: most of the shortfall of \
+             the panel pressure is in the relative motion of linear strip theory on the reconstructed hull \
+             (no bow-wave swell-up, no nonlinear motion), before any water-entry model",
+            e.draft_m,
+            rm.velocity.norm() * e.wave_amplitude_m,
+            100.0 * bound / v_ref,
+            hit.map_or("the water does not reach the panel".into(), |c| format!(
+                "{:.3} m/s, {:.0} %, when the undisturbed surface reaches the panel's lower edge",
+                c.velocity_m_per_s,
+                100.0 * c.velocity_m_per_s / v_ref
+            )),
+            100.0 * (bound / v_ref).powi(2),
+            hit.map_or(String::new(), |c| format!(
+                " ({:.0} % at the panel's lower edge)",
+                100.0 * (c.velocity_m_per_s / v_ref).powi(2)
+            )),
+        ),
+    });
+    let (delay, delay_note, delay_quantity) = match (hit, keel) {
+        (Some(h), Some(k)) => (
+            Some((h.time_s - k.time_s).rem_euclid(2.0 * std::f64::consts::PI / omega_e)),
+            "computed: flare impact (as above) minus keel entry, from strip theory".to_string(),
+            format!("delay of flare impact after keel entry, {f} Lpp"),
+        ),
+        _ => (
+            flare_event.and_then(|fe| fe.impact_delay_after_start_s),
+            "the keel does not emerge at this station in the computed motions, so there is no keel entry \
+             to count from; computed instead: the delay from the start of the flare event (least immersion) \
+             to the water reaching the panel's lower edge, a different definition. Reference: the 0.21 s is \
+             the delay in Veen's 2D run, which imposed the measured relative velocity from keel contact in \
+             still water (Veen 2010 s. 6.2.2), not a delay measured in the basin"
+                .to_string(),
+            format!(
+                "delay of flare impact after the start of the flare event (least immersion, not keel \
+                 entry), {f} Lpp"
+            ),
+        ),
     };
     out.comparisons.push(Comparison {
-        quantity: format!("delay of flare impact after keel entry, {f} Lpp"),
+        quantity: delay_quantity,
         computed: delay,
         reference: num("reported_comparisons", "flare_impact_delay_after_keel_s")?,
         unit: "s",
         source: HM_SOURCE.into(),
-        note: if keel.is_none() {
-            "the keel does not emerge at this station in this wave, so there is no keel entry to count \
-             from; reference: in Veen's 2D run the section was driven from keel contact with the measured \
-             relative velocity"
-                .into()
-        } else {
-            "computed: flare impact (as above) minus keel entry, from strip theory".into()
-        },
+        note: delay_note,
     });
     // Wagner's wedge peak, rho V^2 / 2 (pi^2/4) cot^2(beta), at the panel's own chord angle.
     let rho = plan_rho(hull, plan);
     let cp = crate::analytic::wagner::peak_pressure_coefficient(beta)?;
     let wagner_at = |v: f64| 0.5 * rho * v * v * cp / 1e3;
-    let v_ref = num("reported_comparisons", "flare_impact_speed_m_s")?;
     out.comparisons.push(Comparison {
         quantity: format!(
             "Wagner wedge peak pressure at the panel's chord angle {:.1} deg and the reference 1.4 m/s",

@@ -198,8 +198,10 @@ pub(crate) fn plan_events(
                         half_points: p.hull.section_at(st.x)?.points.clone(),
                         motion: crate::impact::entry_motion(&k),
                         sensors: p.sensors_at(st.aft_of_fp),
+                        immersion_m: 0.0,
                     }),
                     design: Some(design),
+                    flare: None,
                 });
             }
         }

@@ -86,17 +86,29 @@ fn sph_event(
         .as_ref()
         .ok_or_else(|| Error::Invalid("no water entry to run".into()))?;
     let section = Section::from_half_points(case.half_points.clone())?;
+    let overrides = sph::Overrides {
+        initial_immersion: (case.immersion_m > 0.0).then_some(case.immersion_m),
+        ..overrides.clone()
+    };
     let mut setup = sph::case::resolve(
         &e.label(),
         &section,
         &case.motion,
         case.sensors.clone(),
-        overrides,
+        &overrides,
     )?;
     if setup.filter_cutoff_hz.is_none() {
         let (t, v) = analytic::samples(&case.motion)?;
         let coarsest = setup.nominal_sample_hz() / study.ratio.powi(study.levels as i32 - 1);
-        let c = cutoff::slamming_cutoff(&section, &t, &v, &setup.sensors, setup.c0, coarsest)?;
+        let c = cutoff::slamming_cutoff(
+            &section,
+            case.immersion_m,
+            &t,
+            &v,
+            &setup.sensors,
+            setup.c0,
+            coarsest,
+        );
         setup.filter_cutoff_hz = c.hz;
         setup.notes.push(c.note);
     }
@@ -119,6 +131,38 @@ fn sph_event(
     let rec = record(&key, &r.summary);
     cache::commit(out, &key, &tmp, &rec)?;
     Ok(rec)
+}
+
+/// What the SPH section force of a flare event holds besides the slam: the hydrostatic buoyancy of the
+/// section immersed at the start (rho g A, A the immersed area at the keel depth, from the hull
+/// section), which the analytic (Wagner) force leaves out; its value at the start and at the SPH force
+/// peak (keel depth d0 + integral of V).
+fn buoyancy_note(d0: f64, case: &plan::EntryCase, t_peak: f64) -> String {
+    let sec = crate::hull::Section::new(case.half_points.clone());
+    let table = match &case.motion {
+        sph::MotionSpec::Prescribed { table } => table.as_slice(),
+        _ => &[],
+    };
+    let mut depth = d0;
+    for w in table.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        if a[0] >= t_peak {
+            break;
+        }
+        let tb = b[0].min(t_peak);
+        let vb = a[1] + (b[1] - a[1]) * (tb - a[0]) / (b[0] - a[0]).max(f64::MIN_POSITIVE);
+        depth += 0.5 * (a[1] + vb) * (tb - a[0]);
+    }
+    let rho_g = analytic::RHO * 9.81;
+    let at = |d: f64| rho_g * sec.properties(sec.keel_z() + d).area;
+    format!(
+        "flare event: the SPH section force includes the hydrostatic buoyancy of the immersed section, rho g A \
+         = {:.1} N/m at the start (keel {d0:.4} m deep) and {:.1} N/m at the force peak (keel {depth:.4} m \
+         deep, t = {t_peak:.4} s); the slamming part is the difference, and the analytic (Wagner) force has \
+         no buoyancy",
+        at(d0),
+        at(depth)
+    )
 }
 
 /// The events that get an SPH run: every emerging one (`sph`), the governing one of each station by the
@@ -224,6 +268,9 @@ pub fn run(
         if let Some(a) = &estimates[i] {
             warnings.extend(a.notes.iter().map(|n| format!("analytic: {n}")));
         }
+        if let (Some(f), Some(r), Some(case)) = (&e.flare, &sph, &e.entry) {
+            warnings.push(buoyancy_note(f.immersion_m, case, r.force_peak_time_s));
+        }
         events.push(EventResult {
             station: e.station,
             x_m: e.x,
@@ -231,6 +278,8 @@ pub fn run(
             wave: e.wave.clone(),
             slam_flag: e.flag,
             entry_velocity_m_per_s: e.entry_velocity_m_s,
+            entry_kind: e.entry.as_ref().map(|_| plan::kind_of(e.flare.as_ref())),
+            flare_event: e.flare.clone(),
             design_event: e.design.clone(),
             analytic: estimates[i].clone(),
             run_folder: sph.as_ref().map(|r| format!("cache/{}", r.key)),

@@ -6,7 +6,10 @@
 //! * [`plan`]: strip theory at every speed and regular wave of the sea-state file, at the stations that
 //!   carry sensors; each station whose keel emerges gives one water-entry event (its section, driven by
 //!   the entry-velocity history after keel entry, with the station's sensors). Where the keel stays in the
-//!   water the station is recorded as "no slam", with the flag `slamtool motions` prints (Ochi 1964).
+//!   water the station is recorded as "no slam", with the flag `slamtool motions` prints (Ochi 1964), and
+//!   where the water then reaches sensors above the still-water line it gives a flare event: the section
+//!   immersed to its least immersion d0 = T - |s_a| in water at rest, driven from that instant
+//!   ([`crate::impact::flare`]).
 //!   Irregular seas give Ochi's slam statistics and one design event per slamming station and speed
 //!   ([`design_event`]).
 //! * [`analytic`]: generalised Wagner force and modified Logvinovich sensor pressures for an event.

@@ -1,6 +1,9 @@
 //! The plan of an assessment: strip theory at every speed and regular wave, and one water-entry event per
 //! station whose keel emerges (the 2D+t join of Veen 2010, ch. 6: the keel-entry velocity history of the
-//! relative motion drives the station's 2D section).
+//! relative motion drives the station's 2D section), or, where the keel stays immersed but the rising
+//! water reaches sensors above the still-water line, one flare event: the section immersed to its least
+//! immersion d0 = T - |s_a| in water at rest, driven by the relative velocity from that instant until it
+//! reverses ([`crate::impact::flare`], where the idealisation and what it neglects are stated).
 
 use serde::{Deserialize, Serialize};
 
@@ -105,9 +108,52 @@ pub struct Event {
     pub draft_m: f64,
     /// For an irregular sea's design event: its definition (None for a regular wave).
     pub design: Option<super::design_event::DesignEvent>,
+    /// For a flare event (keel immersed): its start and flare impact (None for a keel entry).
+    pub flare: Option<FlareEvent>,
     /// What runs: the section, the prescribed entry motion and the sensors (None: the keel does not
-    /// emerge, nothing runs).
+    /// emerge and no sensor is struck, nothing runs).
     pub entry: Option<EntryCase>,
+}
+
+/// A flare event: the keel stays immersed, the water rising relative to the hull strikes sensors above
+/// the still-water line ([`crate::impact::flare::immersed_start`]).
+#[derive(Debug, Clone, Serialize)]
+pub struct FlareEvent {
+    /// Keel depth below the undisturbed local water surface at the start, d0 = T - |s_a| (m).
+    pub immersion_m: f64,
+    /// Instant of least immersion within the encounter period (s; 0: wave crest at midship).
+    pub start_time_s: f64,
+    /// Relative motion amplitude |s_a| (m) and relative velocity amplitude (m/s) of strip theory.
+    pub relative_motion_amplitude_m: f64,
+    pub relative_velocity_amplitude_m_per_s: f64,
+    /// Sensors with part of the panel above the still-water line that the water reaches.
+    pub struck_sensors: Vec<String>,
+    /// The first of them whose lower edge the water reaches after the start (None when every struck
+    /// panel is partly wet already at least immersion).
+    pub first_sensor: Option<String>,
+    /// Height of that sensor's lower edge above the keel (m).
+    pub impact_height_m: Option<f64>,
+    /// Downward relative velocity when the undisturbed water surface reaches it (m/s), and when that is
+    /// after the start of the event (s).
+    pub impact_velocity_m_per_s: Option<f64>,
+    pub impact_delay_after_start_s: Option<f64>,
+    /// The idealisation, as written wherever the event appears.
+    pub note: String,
+}
+
+/// What every flare event says of its idealisation.
+pub const FLARE_NOTE: &str = "flare event with the keel immersed: the 2D run starts at the instant of \
+least immersion with the section immersed to d0 in water at rest (2D+t still-water idealisation, as Veen \
+2010); the wave orbital flow and the flow radiated by the earlier cycle of motion are neglected, so the \
+water has no velocity and no surface elevation of its own at the start, and the impact depends only on the \
+strip-theory relative velocity";
+
+/// The kind of water entry, as written in summary.json, the CSV tables and the report.
+pub fn kind_of(flare: Option<&FlareEvent>) -> String {
+    match flare {
+        Some(f) => format!("flare, keel immersed to {:.3} m", f.immersion_m),
+        None => "keel entry".into(),
+    }
 }
 
 /// The 2D water entry of an event.
@@ -117,6 +163,9 @@ pub struct EntryCase {
     pub half_points: Vec<[f64; 2]>,
     pub motion: MotionSpec,
     pub sensors: Vec<SensorSpec>,
+    /// Keel depth below the water surface at rest at the start (m): 0 for a keel entry, d0 for a flare
+    /// event.
+    pub immersion_m: f64,
 }
 
 impl Event {
@@ -238,17 +287,39 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
         for w in &sp.regular {
             for st in &w.stations {
                 let flag = SlamFlag::of(st, motions.slam_threshold_velocity_m_s);
+                let here = sensors
+                    .iter()
+                    .find(|q| (q.station - st.aft_of_fp).abs() < 1e-9)
+                    .map(|q| q.sensors.clone())
+                    .unwrap_or_default();
+                let points = hull.section_at(st.x)?.points.clone();
+                let height = stations
+                    .iter()
+                    .find(|q| (q.aft_of_fp - st.aft_of_fp).abs() < 1e-9)
+                    .map_or(f64::INFINITY, |q| q.height);
+                let mut flare = None;
                 let entry = match &st.keel_entry {
                     Some(k) => Some(EntryCase {
-                        half_points: hull.section_at(st.x)?.points.clone(),
+                        half_points: points,
                         motion: impact::entry_motion(k),
-                        sensors: sensors
-                            .iter()
-                            .find(|q| (q.station - st.aft_of_fp).abs() < 1e-9)
-                            .map(|q| q.sensors.clone())
-                            .unwrap_or_default(),
+                        sensors: here,
+                        immersion_m: 0.0,
                     }),
-                    None => None,
+                    None => {
+                        match flare_event(st, w.omega_e, 0.5 * w.height_m, height, &points, &here) {
+                            Some((f, motion)) => {
+                                let immersion_m = f.immersion_m;
+                                flare = Some(f);
+                                Some(EntryCase {
+                                    half_points: points,
+                                    motion,
+                                    sensors: here,
+                                    immersion_m,
+                                })
+                            }
+                            None => None,
+                        }
+                    }
                 };
                 events.push(Event {
                     station: st.aft_of_fp,
@@ -257,12 +328,17 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
                     wave: w.wave.clone(),
                     flag,
                     entry_velocity_m_s: st.keel_entry.as_ref().map(|k| k.entry_velocity),
-                    entry_time_s: st.keel_entry.as_ref().map(|k| k.t_entry),
+                    entry_time_s: st
+                        .keel_entry
+                        .as_ref()
+                        .map(|k| k.t_entry)
+                        .or(flare.as_ref().map(|f| f.start_time_s)),
                     encounter_period_s: 2.0 * std::f64::consts::PI / w.omega_e,
                     wave_omega_rad_s: w.omega0,
                     wave_amplitude_m: 0.5 * w.height_m,
                     draft_m: st.draft,
                     design: None,
+                    flare,
                     entry,
                 });
             }
@@ -310,4 +386,53 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
         events,
         warnings,
     })
+}
+
+/// The flare event of a station whose keel stays immersed, and its prescribed motion: None when the keel
+/// emerges, or when no sensor above the still-water line is reached by the water.
+fn flare_event(
+    st: &crate::seakeeping::analysis::RegularStation,
+    omega_e: f64,
+    zeta_a: f64,
+    max_depth: f64,
+    points: &[[f64; 2]],
+    sensors: &[SensorSpec],
+) -> Option<(FlareEvent, MotionSpec)> {
+    use crate::impact::flare;
+    let rm = &st.relative_motion;
+    let amp = rm.motion.norm() * zeta_a;
+    let struck = flare::struck_sensors(points, sensors, st.draft, amp);
+    if struck.is_empty() {
+        return None;
+    }
+    let start = flare::immersed_start(rm, omega_e, zeta_a, st.draft, max_depth, 41)?;
+    // The first panel whose lower edge is still dry at least immersion (above d0).
+    let first = struck
+        .iter()
+        .filter(|(_, lo)| *lo > start.immersion_m)
+        .min_by(|a, b| a.1.total_cmp(&b.1));
+    let hit = first.and_then(|(_, lo)| flare::water_reaches(rm, omega_e, zeta_a, st.draft, *lo));
+    let motion = MotionSpec::Prescribed {
+        table: start
+            .samples
+            .iter()
+            .map(|s| [s.t, s.velocity.max(0.0)])
+            .collect(),
+    };
+    Some((
+        FlareEvent {
+            immersion_m: start.immersion_m,
+            start_time_s: start.start_time_s,
+            relative_motion_amplitude_m: amp,
+            relative_velocity_amplitude_m_per_s: rm.velocity.norm() * zeta_a,
+            struck_sensors: struck.iter().map(|(n, _)| n.clone()).collect(),
+            first_sensor: first.map(|(n, _)| n.clone()),
+            impact_height_m: first.map(|(_, lo)| *lo),
+            impact_velocity_m_per_s: hit.map(|c| c.velocity_m_per_s),
+            impact_delay_after_start_s: hit
+                .map(|c| (c.time_s - start.start_time_s).rem_euclid(start.encounter_period_s)),
+            note: FLARE_NOTE.into(),
+        },
+        motion,
+    ))
 }

@@ -59,6 +59,13 @@ pub struct EventResult {
     pub slam_flag: SlamFlag,
     /// Velocity at keel entry (m/s), when the keel emerges.
     pub entry_velocity_m_per_s: Option<f64>,
+    /// The kind of water entry: "keel entry", or "flare, keel immersed to <d0> m" for a flare event (the
+    /// keel stays immersed; see `flare_event`); None when nothing runs.
+    pub entry_kind: Option<String>,
+    /// For a flare event: its start (least immersion d0), the sensors struck, the relative velocity at
+    /// flare impact and the idealisation it rests on.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub flare_event: Option<super::plan::FlareEvent>,
     /// For an irregular sea's design event (wave "<sea>/design"): how it is defined, with N or alpha.
     pub design_event: Option<super::design_event::DesignEvent>,
     /// Generalised Wagner force and MLM sensor pressures (when the keel emerges).
@@ -250,6 +257,8 @@ pub fn pressures_csv(a: &Assessment, sensors_of: &dyn Fn(f64) -> Vec<String>) ->
         "wave",
         "slam_flag",
         "entry_velocity_m_per_s",
+        "entry_kind",
+        "flare_impact_velocity_m_per_s",
         "sensor",
         "sph_raw_peak_pa",
         "sph_filtered_peak_pa",
@@ -294,6 +303,11 @@ pub fn pressures_csv(a: &Assessment, sensors_of: &dyn Fn(f64) -> Vec<String>) ->
                 e.wave.clone(),
                 flag.clone(),
                 num(e.entry_velocity_m_per_s),
+                e.entry_kind.clone().unwrap_or_default(),
+                num(e
+                    .flare_event
+                    .as_ref()
+                    .and_then(|f| f.impact_velocity_m_per_s)),
                 n.clone(),
                 num(s.map(|q| q.raw_peak_pa)),
                 num(s.and_then(|q| q.filtered_peak_pa)),

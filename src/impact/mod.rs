@@ -1,6 +1,7 @@
 //! From relative motion to water entry (the 2D+t join, Veen 2010 ch. 6): the seakeeping station of a
 //! hull section (its local draft in the loading), the 2D section that enters the water, and the
-//! entry-velocity history after keel entry as the prescribed motion of a 2D run.
+//! entry-velocity history after keel entry as the prescribed motion of a 2D run; and, where the keel stays
+//! in the water, the flare event that starts at least immersion ([`flare`]).
 //!
 //! Frames: the hull's sections are given above the baseline; the 2D water-entry frame has the keel at
 //! the origin at the instant of keel entry and the undisturbed local water surface at z = 0 (see

@@ -23,7 +23,6 @@
 //! samples per rise: the records are then left unfiltered and the note says why.
 
 use crate::analytic::generalised_wagner;
-use crate::error::Result;
 use crate::sph::SensorSpec;
 use crate::sph::body::{Section, point_at_arc};
 
@@ -53,18 +52,40 @@ fn time_reaching(t: &[f64], c: &[f64], y: f64) -> Option<f64> {
     Some(t[k - 1] + f * (t[k] - t[k - 1]))
 }
 
-/// The cut-off for the sensor records of `section` driven by the downward velocity samples (`t`, `v`)
-/// from keel entry, with sound speed `c0` (m/s), where the coarsest record is sampled at
-/// `coarsest_sample_hz`.
+/// The cut-off for the sensor records of `section`, started with its keel `d0` (m) deep in water at rest
+/// (0: keel entry) and driven by the downward velocity samples (`t`, `v`) from the start, with sound
+/// speed `c0` (m/s), where the coarsest record is sampled at `coarsest_sample_hz`. Sensors already wetted
+/// at the start are not crossed by the contact and set no rise time. Without a Wagner estimate of the
+/// section the records are left unfiltered, and the note says why.
 pub fn slamming_cutoff(
     section: &Section,
+    d0: f64,
     t: &[f64],
     v: &[f64],
     sensors: &[SensorSpec],
     c0: f64,
     coarsest_sample_hz: f64,
-) -> Result<Cutoff> {
-    let est = generalised_wagner::estimate(section.half_points(), t, v, 1000.0)?;
+) -> Cutoff {
+    let est = match generalised_wagner::estimate_immersed(section.half_points(), d0, t, v, 1000.0) {
+        Ok(e) if !e.half_width.is_empty() => e,
+        Ok(_) => {
+            return Cutoff {
+                hz: None,
+                note: "no low-pass filter: the Wagner estimate of this run is empty (raw records only)"
+                    .into(),
+            };
+        }
+        Err(e) => {
+            return Cutoff {
+                hz: None,
+                note: format!(
+                    "no low-pass filter: no Wagner estimate of this section to set a cut-off ({e}); \
+                     raw records only"
+                ),
+            };
+        }
+    };
+    let wetted_at_start = if d0 > 0.0 { est.half_width[0] } else { 0.0 };
     let mut quickest: Option<(f64, &str)> = None;
     for q in sensors {
         let edge = |s: f64| point_at_arc(section, s).map(|p| p[0].abs());
@@ -74,6 +95,9 @@ pub fn slamming_cutoff(
             continue;
         };
         let (y_lo, y_hi) = (y_lo.min(y_hi), y_lo.max(y_hi));
+        if y_lo < wetted_at_start {
+            continue;
+        }
         let (Some(t_lo), Some(t_hi)) = (
             time_reaching(&est.t, &est.half_width, y_lo),
             time_reaching(&est.t, &est.half_width, y_hi),
@@ -86,17 +110,17 @@ pub fn slamming_cutoff(
         }
     }
     let Some((tau, name)) = quickest else {
-        return Ok(Cutoff {
+        return Cutoff {
             hz: None,
             note:
                 "no low-pass filter: Wagner's wetted contact crosses no sensor of this run, so no \
                    slamming rise time sets a cut-off (raw records only)"
                     .into(),
-        });
+        };
     };
     let fc = CUTOFF_TIMES_RISE / tau;
     let limit = MAX_CUTOFF_OVER_SAMPLE_RATE * coarsest_sample_hz;
-    Ok(if fc <= limit {
+    if fc <= limit {
         Cutoff {
             hz: Some(fc),
             note: format!(
@@ -116,7 +140,7 @@ pub fn slamming_cutoff(
                 tau * 1e3
             ),
         }
-    })
+    }
 }
 
 #[cfg(test)]
@@ -167,7 +191,7 @@ mod tests {
         let t: Vec<f64> = (0..=2000).map(|k| k as f64 * 1e-4).collect();
         let v = vec![2.0; t.len()];
         let (s, w) = (0.15, 0.02);
-        let c = slamming_cutoff(&sec, &t, &v, &[sensor("S1", s, w)], 50.0, 1e6).unwrap();
+        let c = slamming_cutoff(&sec, 0.0, &t, &v, &[sensor("S1", s, w)], 50.0, 1e6);
         let dy = w * beta.cos();
         let tau = dy * beta.tan() / (std::f64::consts::FRAC_PI_2 * 2.0);
         let fc = c.hz.unwrap();
@@ -184,7 +208,7 @@ mod tests {
         let sec = Section::wedge(beta, 0.3, 0.3).unwrap();
         let t: Vec<f64> = (0..=2000).map(|k| k as f64 * 1e-4).collect();
         let v = vec![2.0; t.len()];
-        let c = slamming_cutoff(&sec, &t, &v, &[sensor("S1", 0.15, 0.02)], 50.0, 2000.0).unwrap();
+        let c = slamming_cutoff(&sec, 0.0, &t, &v, &[sensor("S1", 0.15, 0.02)], 50.0, 2000.0);
         assert_eq!(c.hz, None);
         assert!(c.note.contains("no low-pass filter"));
     }

@@ -119,6 +119,9 @@ pub struct RegularStation {
     #[serde(rename = "relative_velocity_amplitude_m_per_s")]
     pub relative_velocity_m_s: f64,
     pub keel_entry: Option<KeelEntry>,
+    /// Relative motion and velocity per unit wave amplitude (for the events of `assess`; not written).
+    #[serde(skip)]
+    pub relative_motion: relative_motion::RelativeMotion,
 }
 
 #[derive(Debug, Clone, Serialize)]
@@ -283,6 +286,7 @@ pub fn run(model: &ShipModel, req: &Request) -> Result<Report> {
                         s.height,
                         req.profile_samples,
                     ),
+                    relative_motion: rm,
                 });
             }
             regular.push(RegularResult {

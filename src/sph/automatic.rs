@@ -96,6 +96,19 @@ pub fn wetting_penetration(section: &Section, y: f64) -> Option<f64> {
     (d.is_finite() && d > 0.0).then_some(d)
 }
 
+/// Penetration since the start at which the wetted contour of a section immersed to `d0` at rest
+/// reaches the half-breadth `y` (Wagner's condition on the body above the initial waterline); `None`
+/// when it cannot be solved or `y` is wetted from the start.
+pub fn immersed_wetting_penetration(section: &Section, y: f64, d0: f64) -> Option<f64> {
+    let p =
+        crate::analytic::section_profile::Profile::from_half_points(section.half_points()).ok()?;
+    let d = p
+        .above(d0)
+        .ok()?
+        .wagner_depth((y * (1.0 - 1e-9)).min(p.y_end()))?;
+    (d.is_finite() && d > 0.0).then_some(d)
+}
+
 /// Time at which the keel reaches `depth` below the calm surface, and the first time the downward speed
 /// falls to zero (the relative motion reverses), whichever comes first; `None` when neither happens
 /// within `t_max`.
@@ -130,12 +143,20 @@ pub fn time_to_depth(m: &Motion, depth: f64, t_max: f64) -> Option<(f64, bool)> 
 /// or past the highest sensor: [`wetting_target`]) and the force has passed its maximum there
 /// ([`END_MARGIN`] times the wetting time), or when the entry velocity has fallen to zero, whichever
 /// comes first; never past the keel reaching 0.9 of the section height (the deck would go under).
-pub fn end_time(section: &Section, m: &Motion, sensors: &[SensorSpec], dp: f64) -> Choice {
-    let h = section.height();
+///
+/// For a section that starts immersed to the keel depth `d0` (0 for a keel entry), depths count from the
+/// start: the wetting uses Wagner's condition with the initial immersion
+/// ([`crate::analytic::entry_kinematics`]), and the cap is the keel 0.9 of the height deep in all.
+pub fn end_time(section: &Section, m: &Motion, sensors: &[SensorSpec], dp: f64, d0: f64) -> Choice {
     let t_max = 60.0;
     let (y_target, what) = wetting_target(section, sensors);
     let min_depth = MIN_PENETRATION_DP * dp;
-    let (depth, what) = match wetting_penetration(section, y_target) {
+    let wet = if d0 > 0.0 {
+        immersed_wetting_penetration(section, y_target, d0)
+    } else {
+        wetting_penetration(section, y_target)
+    };
+    let (depth, what) = match wet {
         Some(d) if d >= min_depth => (d, what),
         _ => (
             min_depth,
@@ -145,7 +166,7 @@ pub fn end_time(section: &Section, m: &Motion, sensors: &[SensorSpec], dp: f64) 
             ),
         ),
     };
-    let depth = depth.min(0.9 * h);
+    let depth = depth.min(0.9 * section.height() - d0);
     match time_to_depth(m, depth, t_max) {
         Some((t, true)) => Choice {
             value: t,
@@ -155,7 +176,8 @@ pub fn end_time(section: &Section, m: &Motion, sensors: &[SensorSpec], dp: f64) 
         },
         Some((t, false)) => {
             let tm = END_MARGIN * t;
-            let cap = time_to_depth(m, 0.9 * h, t_max).map_or(f64::INFINITY, |d| d.0);
+            let cap =
+                time_to_depth(m, 0.9 * section.height() - d0, t_max).map_or(f64::INFINITY, |d| d.0);
             let rev = time_to_depth(m, f64::INFINITY, tm.min(t_max))
                 .filter(|r| r.1)
                 .map_or(f64::INFINITY, |r| r.0);

@@ -169,6 +169,15 @@ pub struct Setup {
     pub mirror: bool,
     #[serde(rename = "t_end_s")]
     pub t_end: f64,
+    /// Keel depth below the water surface at rest at t = 0 (m): 0 for a keel entry (the keel touches the
+    /// surface), d0 > 0 for a section that starts immersed (a flare event of `assess`). The fluid is at rest
+    /// with hydrostatic pressure and has no particle inside the body or within dp/2 of its contour.
+    #[serde(
+        rename = "initial_immersion_m",
+        default,
+        skip_serializing_if = "is_zero"
+    )]
+    pub initial_immersion: f64,
     pub sensors: Vec<SensorSpec>,
     /// Time between particle snapshots (VTK/PNG); `None` for none.
     #[serde(rename = "snapshot_interval_s")]
@@ -177,6 +186,10 @@ pub struct Setup {
     pub filter_cutoff_hz: Option<f64>,
     /// How each automatic choice was made.
     pub notes: Vec<String>,
+}
+
+fn is_zero(x: &f64) -> bool {
+    *x == 0.0
 }
 
 impl Setup {
@@ -217,6 +230,8 @@ pub struct Overrides {
     pub t_end: Option<f64>,
     pub snapshot_interval: Option<f64>,
     pub filter_cutoff_hz: Option<f64>,
+    /// Keel depth below the water at rest at t = 0 (m; None: 0, the keel at the surface).
+    pub initial_immersion: Option<f64>,
 }
 
 /// Whether particle shifting is on unless a case says otherwise.
@@ -246,6 +261,20 @@ pub fn resolve(
 ) -> Result<Setup> {
     let built = motion.build()?;
     let mut notes = Vec::new();
+    let d0 = o.initial_immersion.unwrap_or(0.0);
+    if !(d0.is_finite() && d0 >= 0.0 && d0 < section.height()) {
+        return Err(Error::Invalid(format!(
+            "the initial immersion must be at least 0 m and below the section's height ({:.4} m), got {d0} m",
+            section.height()
+        )));
+    }
+    if d0 > 0.0 {
+        notes.push(format!(
+            "the section starts immersed: keel {d0:.4} m below the water surface at rest at t = 0 (fluid at rest, \
+             hydrostatic pressure, no particle inside the body or within dp/2 of its contour); the contact \
+             transient is then the start of the motion"
+        ));
+    }
     let b = section.half_breadth();
     let n_half = o
         .particles_per_half_beam
@@ -269,13 +298,13 @@ pub fn resolve(
             t
         }
         None => {
-            let c = automatic::end_time(section, &built, &sensors, dp);
+            let c = automatic::end_time(section, &built, &sensors, dp, d0);
             notes.push(c.note);
             c.value
         }
     };
     let g = 9.81;
-    let keel_depth_end = keel_depth(&built, t_end);
+    let keel_depth_end = d0 + keel_depth(&built, t_end);
     let (auto_w, auto_d, auto_layer, tank_note) = automatic::tank(section, keel_depth_end);
     let tank_given = o.tank_half_width.is_some() || o.tank_depth.is_some();
     let tank_half_width = o.tank_half_width.unwrap_or(auto_w);
@@ -341,6 +370,7 @@ pub fn resolve(
         damping_zone,
         mirror: o.mirror.unwrap_or(true),
         t_end,
+        initial_immersion: d0,
         sensors,
         snapshot_interval: o.snapshot_interval,
         filter_cutoff_hz: o.filter_cutoff_hz,
@@ -415,7 +445,7 @@ pub fn check(s: &Setup) -> Result<()> {
         {
             let height = p.iter().map(|q| q[1]).fold(f64::NEG_INFINITY, f64::max)
                 - p.iter().map(|q| q[1]).fold(f64::INFINITY, f64::min);
-            let depth = keel_depth(&built, s.t_end);
+            let depth = s.initial_immersion + keel_depth(&built, s.t_end);
             if depth > height {
                 return Err(Error::Invalid(format!(
                     "t_end = {} s takes the keel {depth:.3} m deep, more than the section's height ({height:.3} m): \

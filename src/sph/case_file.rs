@@ -225,6 +225,7 @@ pub fn from_source(src: &SourceText) -> Result<Setup> {
         });
     }
     let o = Overrides {
+        initial_immersion: None,
         level: f.resolution.level,
         particles_per_half_beam: opt(
             &f.resolution.particles_per_half_beam,

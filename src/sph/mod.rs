@@ -338,12 +338,14 @@ fn summarise_run(sim: &Simulation, wall_s: f64, stopped: Option<String>) -> Resu
 pub const CONTACT_TRANSIENT_DP: f64 = 2.0;
 
 /// The time at which the keel is [`CONTACT_TRANSIENT_DP`] dp below the calm surface (the end of the
-/// record if it never gets there).
+/// record if it never gets there). For a section immersed at the start the penetration counts from
+/// there: the transient is then the start of the motion, when the fluid at rest is set moving.
 fn contact_transient_end(h: &History, dp: f64) -> f64 {
     let depth = CONTACT_TRANSIENT_DP * dp;
+    let z0 = h.z_keel.first().copied().unwrap_or(0.0);
     h.z_keel
         .iter()
-        .position(|&z| -z >= depth)
+        .position(|&z| z0 - z >= depth)
         .map_or(h.t.last().copied().unwrap_or(0.0), |k| h.t[k])
 }
 

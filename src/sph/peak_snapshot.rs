@@ -30,7 +30,8 @@ pub struct PeakSnapshot {
 impl PeakSnapshot {
     /// Look at the state after a step; copy it when a sensor pressure exceeds every earlier one.
     pub fn observe(&mut self, sim: &Simulation) {
-        if -sim.body.z_keel < super::CONTACT_TRANSIENT_DP * sim.setup.dp {
+        let d0 = sim.setup.initial_immersion;
+        if -sim.body.z_keel - d0 < super::CONTACT_TRANSIENT_DP * sim.setup.dp {
             return;
         }
         let values = sim.sensors().values();

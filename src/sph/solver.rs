@@ -49,7 +49,8 @@ pub const DRY_SHEPARD: f64 = 0.1;
 /// The state of the rigid body (heave only).
 #[derive(Debug, Clone, Copy, Default)]
 pub struct BodyState {
-    /// z of the keel in the water-entry frame (m); 0 at t = 0, negative once immersed.
+    /// z of the keel in the water-entry frame (m); at t = 0, 0 (keel entry) or -d0 (a section immersed
+    /// at the start, [`Setup::initial_immersion`]); negative once immersed.
     pub z_keel: f64,
     /// Downward speed (m/s).
     pub v_down: f64,
@@ -127,8 +128,23 @@ impl Simulation {
             wall_height: setup.tank_wall_height,
         };
         let mut pt = Particles::default();
-        tank.fill(&mut pt, dp, layers, mirror, &eos, setup.g);
-        let mut body = BodyState::default();
+        let d0 = setup.initial_immersion;
+        match &section {
+            // A section immersed at the start: no fluid inside it or within dp/2 of its contour (the
+            // spacing a fluid particle keeps from a wall), in the body frame (keel at z = -d0).
+            Some(sec) if d0 > 0.0 => {
+                let c = sec.full_contour();
+                let keep = |y: f64, z: f64| {
+                    !sec.contains(y, z + d0) && body::distance_to_polyline(c, y, z + d0) >= 0.5 * dp
+                };
+                tank.fill_where(&mut pt, dp, layers, mirror, &eos, setup.g, &keep);
+            }
+            _ => tank.fill(&mut pt, dp, layers, mirror, &eos, setup.g),
+        }
+        let mut body = BodyState {
+            z_keel: -d0,
+            ..BodyState::default()
+        };
         let mut contour = Vec::new();
         if let (Some(sec), Some(mot)) = (&section, &motion) {
             let v0 = mot.initial_speed();
@@ -136,7 +152,16 @@ impl Simulation {
             body.a_down = mot.accel_at(0.0).unwrap_or(setup.g);
             let y_min = if mirror { 0.25 * dp } else { f64::NEG_INFINITY };
             for p in body::dummy_points(sec, dp, layers, y_min) {
-                pt.push(Kind::Body, p[0], p[1], 0.0, -v0, setup.rho0, 0.0, dp * dp);
+                pt.push(
+                    Kind::Body,
+                    p[0],
+                    p[1] - d0,
+                    0.0,
+                    -v0,
+                    setup.rho0,
+                    0.0,
+                    dp * dp,
+                );
             }
             contour = body::contour_points(sec, 0.5 * dp, !mirror);
         }

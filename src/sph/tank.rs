@@ -30,6 +30,22 @@ impl Tank {
         eos: &Eos,
         g: f64,
     ) {
+        self.fill_where(pt, dp, layers, mirror, eos, g, &|_, _| true);
+    }
+
+    /// [`Tank::fill`] with only the fluid particles at (y, z) for which `keep` is true (a body immersed
+    /// at the start takes the place of the others).
+    #[allow(clippy::too_many_arguments)]
+    pub fn fill_where(
+        &self,
+        pt: &mut Particles,
+        dp: f64,
+        layers: usize,
+        mirror: bool,
+        eos: &Eos,
+        g: f64,
+        keep: &dyn Fn(f64, f64) -> bool,
+    ) {
         let ny = (self.half_width / dp).round() as i64;
         let nz = (self.depth / dp).round() as i64;
         let y_start = if mirror { 0 } else { -ny };
@@ -39,6 +55,9 @@ impl Tank {
             let p = hydro(z);
             for i in y_start..ny {
                 let y = (i as f64 + 0.5) * dp;
+                if !keep(y, z) {
+                    continue;
+                }
                 pt.push(Kind::Fluid, y, z, 0.0, 0.0, eos.density(p), p, dp * dp);
             }
         }

@@ -132,6 +132,11 @@ fn analytic_case(
                 run_folder: None,
                 failed: None,
                 warnings,
+                entry_kind: e
+                    .entry
+                    .as_ref()
+                    .map(|_| crate::assess::plan::kind_of(e.flare.as_ref())),
+                flare_event: e.flare.clone(),
                 design_event: None,
             });
         }

@@ -149,12 +149,14 @@ impl<'a> VariantModel<'a> {
                         s.height,
                         PROFILE_SAMPLES,
                     ),
+                    relative_motion: rm,
                 };
                 let entry = match &st.keel_entry {
                     Some(k) => Some(EntryCase {
                         half_points: hull.section_at(st.x)?.points.clone(),
                         motion: impact::entry_motion(k),
                         sensors: sensors.clone(),
+                        immersion_m: 0.0,
                     }),
                     None => None,
                 };
@@ -171,6 +173,7 @@ impl<'a> VariantModel<'a> {
                     wave_amplitude_m: za,
                     draft_m: st.draft,
                     design: None,
+                    flare: None,
                     entry,
                 });
             }

@@ -396,9 +396,34 @@ pub fn hermundstad_assess(case: &Case, memo: &Memo) -> Result<Outcome> {
             ],
         }),
         figures: Vec::new(),
-        notes: vec![format!(
-            "design event: {} m/s, wave {}; the section is a reconstruction",
-            design.speed_m_per_s, design.wave
-        )],
+        notes: {
+            let ev = a.events.iter().find(|e| {
+                e.speed_m_per_s == design.speed_m_per_s
+                    && e.wave == design.wave
+                    && e.sensor_peak(&name).is_some()
+            });
+            let mut notes = vec![format!(
+                "design event: {} m/s, wave {}, {}; the section is a reconstruction",
+                design.speed_m_per_s,
+                design.wave,
+                ev.and_then(|e| e.entry_kind.clone())
+                    .unwrap_or_else(|| "kind unknown".into())
+            )];
+            notes.extend(
+                a.validation
+                    .comparisons
+                    .iter()
+                    .filter(|c| c.unit == "m/s")
+                    .map(|c| {
+                        format!(
+                            "{}: {} m/s against {} m/s",
+                            c.quantity,
+                            c.computed.map_or("-".into(), |v| format!("{v:.3}")),
+                            c.reference
+                        )
+                    }),
+            );
+            notes
+        },
     })
 }

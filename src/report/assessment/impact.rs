@@ -149,19 +149,40 @@ pub fn section(r: &mut Report, saved: &Saved) {
         };
         let e = &saved.events()[i];
         let tag = format!("{}_{}", f, slug(text(e, "wave")));
-        r.para(&format!(
-            "Governing event: {} m/s in wave {}, entry velocity {:.3} m/s ({}).",
-            num(e, "speed_m_per_s").unwrap_or(f64::NAN),
-            text(e, "wave"),
-            num(e, "entry_velocity_m_per_s").unwrap_or(f64::NAN),
-            text(e, "slam_flag").replace('-', " ")
-        ));
+        let t_axis = if e["flare_event"].is_object() {
+            "time since the start at least immersion (ms)"
+        } else {
+            "time since keel entry (ms)"
+        };
+        match num(&e["flare_event"], "immersion_m") {
+            Some(d0) => r.para(&format!(
+                "Governing event: {} m/s in wave {}, a flare event ({}): the keel stays immersed, the section \
+                 starts at its least immersion d0 = {d0:.3} m in water at rest (the wave orbital flow and the \
+                 flow of the earlier cycle are neglected) and time is counted from that start, not from a keel \
+                 entry. The undisturbed water reaches the first panel above the still-water line at {} m/s, \
+                 {} s after the start.",
+                num(e, "speed_m_per_s").unwrap_or(f64::NAN),
+                text(e, "wave"),
+                text(e, "entry_kind"),
+                num(&e["flare_event"], "impact_velocity_m_per_s")
+                    .map_or("-".into(), |v| format!("{v:.3}")),
+                num(&e["flare_event"], "impact_delay_after_start_s")
+                    .map_or("-".into(), |v| format!("{v:.3}")),
+            )),
+            None => r.para(&format!(
+                "Governing event: {} m/s in wave {}, entry velocity {:.3} m/s ({}).",
+                num(e, "speed_m_per_s").unwrap_or(f64::NAN),
+                text(e, "wave"),
+                num(e, "entry_velocity_m_per_s").unwrap_or(f64::NAN),
+                text(e, "slam_flag").replace('-', " ")
+            )),
+        }
         let Some(run) = &saved.runs[i] else {
             if let Some(pts) = profile_from_motions(saved, e) {
                 let mut fig = Figure::new(
                     &format!("entry_velocity_{tag}"),
                     &format!("Entry-velocity profile, station {f}"),
-                    "time since keel entry (ms)",
+                    t_axis,
                     "downward velocity (m/s)",
                 );
                 fig.series
@@ -185,7 +206,7 @@ pub fn section(r: &mut Report, saved: &Saved) {
         let mut fig = Figure::new(
             &format!("entry_velocity_{tag}"),
             &format!("Entry-velocity profile, station {f}"),
-            "time since keel entry (ms)",
+            t_axis,
             "downward velocity (m/s)",
         );
         fig.series.push(Series::new(
@@ -205,7 +226,7 @@ pub fn section(r: &mut Report, saved: &Saved) {
         let mut fig = Figure::new(
             &format!("pressure_history_{tag}"),
             &format!("Sensor pressures, station {f}"),
-            "time since keel entry (ms)",
+            t_axis,
             "pressure (kPa)",
         );
         for (k, n) in sensors.iter().enumerate() {
@@ -253,7 +274,7 @@ pub fn section(r: &mut Report, saved: &Saved) {
         let mut fig = Figure::new(
             &format!("section_force_{tag}"),
             &format!("Vertical section force, station {f}"),
-            "time since keel entry (ms)",
+            t_axis,
             "section force (kN/m)",
         );
         fig.series.push(Series::new(

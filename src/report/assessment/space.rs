@@ -240,6 +240,19 @@ pub fn comparison(r: &mut Report, saved: &Saved) {
     }
 }
 
+/// The kind of an event's water entry, short: "keel" or "flare, d0 <m>" (the keel immersed to d0 at the
+/// start, see `flare_event` in summary.json); "-" when nothing runs.
+fn entry_kind(e: &serde_json::Value) -> String {
+    match e["entry_kind"].as_str() {
+        Some(k) if k.starts_with("flare") => match num(&e["flare_event"], "immersion_m") {
+            Some(d0) => format!("flare, d0 {d0:.3} m"),
+            None => "flare".into(),
+        },
+        Some(_) => "keel".into(),
+        None => "-".into(),
+    }
+}
+
 pub fn appendix(r: &mut Report, saved: &Saved) {
     r.heading(1, "Appendix");
     r.heading(2, "Peak pressures of every event");
@@ -251,6 +264,7 @@ pub fn appendix(r: &mut Report, saved: &Saved) {
                 format!("{f}"),
                 format!("{}", num(e, "speed_m_per_s").unwrap_or(f64::NAN)),
                 text(e, "wave").to_string(),
+                entry_kind(e),
                 n.clone(),
                 num(e, "entry_velocity_m_per_s").map_or("-".into(), |v| format!("{v:.3}")),
                 kpa(sensor_value(e, "analytic", &n, "peak_pa")),
@@ -266,6 +280,7 @@ pub fn appendix(r: &mut Report, saved: &Saved) {
             "station",
             "speed m/s",
             "wave",
+            "entry",
             "sensor",
             "v entry m/s",
             "analytic",
