@@ -90,10 +90,83 @@ fn peak_outside(t: &[f64], x: &[f64], acoustic: &[bool]) -> crate::loads::peaks:
     p
 }
 
+/// Largest number of samples of an event's analytic histories after [`densify`].
+const MAX_SAMPLES: usize = 4000;
+
+/// Samples per sensor crossing: the wetted half-width may grow by at most a quarter of the narrowest
+/// sensor's width between two samples.
+const SAMPLES_PER_SENSOR: f64 = 4.0;
+
+/// The velocity samples (`t`, `v`) with samples added (v from the shape-preserving cubic through the
+/// table) wherever the wetted half-width `c` of a first Wagner pass (at times `tc`) grows by more than
+/// `dc` between two of them, so that the peak of a sensor's mean pressure, which lasts while the contact
+/// crosses the sensor, is not missed between samples (the event tables have a few tens of samples, and
+/// the contact can cross a narrow sensor between two). At most [`MAX_SAMPLES`] in all.
+fn densify(t: &[f64], v: &[f64], tc: &[f64], c: &[f64], dc: f64) -> (Vec<f64>, Vec<f64>) {
+    if t.len() < 2 || tc.len() < 2 || !(dc > 0.0) {
+        return (t.to_vec(), v.to_vec());
+    }
+    let table = crate::numerics::pchip::Pchip::new(t, v);
+    let grown = |a: f64, b: f64| -> f64 {
+        // growth of c between times a and b (c is sampled at tc; piecewise linear)
+        let at = |x: f64| -> f64 {
+            let k = tc.partition_point(|&s| s <= x);
+            if k == 0 {
+                c[0]
+            } else if k >= tc.len() {
+                c[c.len() - 1]
+            } else {
+                let f = (x - tc[k - 1]) / (tc[k] - tc[k - 1]);
+                c[k - 1] + f * (c[k] - c[k - 1])
+            }
+        };
+        (at(b) - at(a)).max(0.0)
+    };
+    let extra: Vec<usize> = t
+        .windows(2)
+        .map(|w| ((grown(w[0], w[1]) / dc).ceil() as usize).saturating_sub(1))
+        .collect();
+    let total: usize = t.len() + extra.iter().sum::<usize>();
+    let scale = if total > MAX_SAMPLES {
+        (MAX_SAMPLES - t.len()) as f64 / (total - t.len()) as f64
+    } else {
+        1.0
+    };
+    let (mut ts, mut vs) = (vec![t[0]], vec![v[0]]);
+    for (k, w) in t.windows(2).enumerate() {
+        let n = (extra[k] as f64 * scale).floor() as usize;
+        for j in 1..=n {
+            let x = w[0] + (w[1] - w[0]) * j as f64 / (n + 1) as f64;
+            ts.push(x);
+            vs.push(table.eval(x));
+        }
+        ts.push(w[1]);
+        vs.push(v[k + 1]);
+    }
+    (ts, vs)
+}
+
 /// Estimate an event's force and sensor pressures.
 pub fn estimate(case: &EntryCase) -> Result<Estimate> {
-    let (t, v) = samples(&case.motion)?;
+    let (t0, v0) = samples(&case.motion)?;
     let d0 = case.immersion_m;
+    let first = generalised_wagner::estimate_immersed(&case.half_points, d0, &t0, &v0, RHO)?;
+    let narrowest = case
+        .sensors
+        .iter()
+        .map(|s| s.width_m)
+        .fold(f64::INFINITY, f64::min);
+    let (t, v) = if narrowest.is_finite() {
+        densify(
+            &t0,
+            &v0,
+            &first.t,
+            &first.half_width,
+            narrowest / SAMPLES_PER_SENSOR,
+        )
+    } else {
+        (t0, v0)
+    };
     let w = generalised_wagner::estimate_immersed(&case.half_points, d0, &t, &v, RHO)?;
     // Peaks of the models' own values: samples at the acoustic limit are the water-hammer bound.
     let (force_peak, force_time) = w.force_peak().unwrap_or((0.0, 0.0));
@@ -157,4 +230,26 @@ pub fn estimate(case: &EntryCase) -> Result<Estimate> {
         notes,
         force_history,
     })
+}
+
+#[cfg(test)]
+mod densify_tests {
+    use super::densify;
+
+    #[test]
+    fn samples_are_added_where_the_wetted_width_grows_fast() {
+        // c grows by 0.1 m over the first interval and not at all over the second
+        let t = [0.0, 1.0, 2.0];
+        let v = [1.0, 2.0, 1.0];
+        let (ts, vs) = densify(&t, &v, &t, &[0.0, 0.1, 0.1], 0.01);
+        assert_eq!(ts.len(), 3 + 9);
+        assert!(ts.windows(2).all(|w| w[1] > w[0]));
+        // the table's own samples are kept exactly
+        for (x, y) in t.iter().zip(&v) {
+            let k = ts.iter().position(|s| s == x).unwrap();
+            assert_eq!(vs[k], *y);
+        }
+        // nothing is added over the second interval
+        assert_eq!(ts[ts.len() - 2], 1.0);
+    }
 }
