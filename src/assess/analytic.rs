@@ -103,7 +103,7 @@ const SAMPLES_PER_SENSOR: f64 = 4.0;
 /// crosses the sensor, is not missed between samples (the event tables have a few tens of samples, and
 /// the contact can cross a narrow sensor between two). At most [`MAX_SAMPLES`] in all.
 fn densify(t: &[f64], v: &[f64], tc: &[f64], c: &[f64], dc: f64) -> (Vec<f64>, Vec<f64>) {
-    if t.len() < 2 || tc.len() < 2 || !(dc > 0.0) {
+    if t.len() < 2 || tc.len() < 2 || dc.is_nan() || dc <= 0.0 {
         return (t.to_vec(), v.to_vec());
     }
     let table = crate::numerics::pchip::Pchip::new(t, v);
