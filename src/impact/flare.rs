@@ -27,7 +27,7 @@
 use nalgebra::Complex;
 use serde::Serialize;
 
-use crate::seakeeping::relative_motion::{EntrySample, RelativeMotion};
+use crate::seakeeping::relative_motion::{self, EntrySample, RelativeMotion};
 
 /// The instant the water reaches a height on the section and the relative velocity then.
 #[derive(Debug, Clone, Copy, Serialize)]
@@ -96,31 +96,8 @@ pub fn immersed_start(
     let period = 2.0 * std::f64::consts::PI / omega_e;
     // s(t) = amp cos(w t + arg s_a) is largest at w t + arg s_a = 0
     let t0 = (-rm.motion.arg() / omega_e).rem_euclid(period);
-    let s_at = |t: f64| (rm.motion * Complex::new(0.0, omega_e * t).exp()).re * zeta_a;
-    let v_at = |t: f64| -(rm.velocity * Complex::new(0.0, omega_e * t).exp()).re * zeta_a;
-    let steps = 2000;
-    let dt = period / steps as f64;
-    let mut t_end = t0 + 0.5 * period;
-    let mut rising = false;
-    for i in 1..=steps {
-        let t = t0 + i as f64 * dt;
-        let v = v_at(t);
-        rising |= v > 0.0;
-        if (rising && v <= 0.0) || draft - s_at(t) >= max_depth {
-            t_end = t;
-            break;
-        }
-    }
-    let samples = (0..n)
-        .map(|i| {
-            let t = t0 + (t_end - t0) * i as f64 / (n - 1) as f64;
-            EntrySample {
-                t: t - t0,
-                velocity: v_at(t),
-                penetration: draft - s_at(t),
-            }
-        })
-        .collect();
+    let samples =
+        relative_motion::entry_samples(rm, omega_e, zeta_a, draft, t0, max_depth, n, true);
     Some(ImmersedStart {
         immersion_m: draft - amp,
         start_time_s: t0,

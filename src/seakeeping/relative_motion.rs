@@ -79,6 +79,50 @@ pub struct KeelEntry {
     pub samples: Vec<EntrySample>,
 }
 
+/// `n` samples of the downward relative velocity V(t) and the keel depth T - s(t) of a station of local
+/// draft `draft` in a regular wave of amplitude `zeta_a`, from `t_start` (times counted from it) until V
+/// reverses or the keel is `max_depth` deep, within half an encounter period at the most. With
+/// `wait_for_rise` (a start at rest, V = 0), V must first become positive before its reversal ends the
+/// profile; otherwise the first V <= 0 after the start ends it.
+#[allow(clippy::too_many_arguments)]
+pub fn entry_samples(
+    rm: &RelativeMotion,
+    omega_e: f64,
+    zeta_a: f64,
+    draft: f64,
+    t_start: f64,
+    max_depth: f64,
+    n: usize,
+    wait_for_rise: bool,
+) -> Vec<EntrySample> {
+    let period = 2.0 * std::f64::consts::PI / omega_e;
+    let s_at = |t: f64| (rm.motion * Complex::new(0.0, omega_e * t).exp()).re * zeta_a;
+    let v_at = |t: f64| -(rm.velocity * Complex::new(0.0, omega_e * t).exp()).re * zeta_a;
+    let steps = 2000;
+    let dt = period / steps as f64;
+    let mut t_end = t_start + 0.5 * period;
+    let mut rising = !wait_for_rise;
+    for i in 1..=steps {
+        let t = t_start + i as f64 * dt;
+        let v = v_at(t);
+        rising |= v > 0.0;
+        if (rising && v <= 0.0) || draft - s_at(t) >= max_depth {
+            t_end = t;
+            break;
+        }
+    }
+    (0..n)
+        .map(|i| {
+            let t = t_start + (t_end - t_start) * i as f64 / (n.max(2) - 1) as f64;
+            EntrySample {
+                t: t - t_start,
+                velocity: v_at(t),
+                penetration: draft - s_at(t),
+            }
+        })
+        .collect()
+}
+
 /// Keel entry at a station of local draft `draft` in a regular wave of amplitude `zeta_a`. None when the
 /// keel does not emerge (|s| zeta_a <= draft). The profile runs from entry until the entry velocity
 /// reverses or the keel is `max_depth` below the surface (e.g. the section fully wetted), with `n` samples.
@@ -98,29 +142,8 @@ pub fn keel_entry(
     // s(t) = amp cos(w t + phi) falls through draft where w t + phi = arccos(draft / amp)
     let phase = (draft / amp).acos() - rm.motion.arg();
     let t_entry = (phase / omega_e).rem_euclid(period);
-    let s_at = |t: f64| (rm.motion * Complex::new(0.0, omega_e * t).exp()).re * zeta_a;
     let v_at = |t: f64| -(rm.velocity * Complex::new(0.0, omega_e * t).exp()).re * zeta_a;
-    // end: first time after entry where the velocity reverses or the depth reaches max_depth
-    let steps = 2000;
-    let dt = period / steps as f64;
-    let mut t_end = period * 0.5;
-    for i in 1..=steps {
-        let t = t_entry + i as f64 * dt;
-        if v_at(t) <= 0.0 || draft - s_at(t) >= max_depth {
-            t_end = t;
-            break;
-        }
-    }
-    let samples = (0..n)
-        .map(|i| {
-            let t = t_entry + (t_end - t_entry) * i as f64 / (n - 1) as f64;
-            EntrySample {
-                t: t - t_entry,
-                velocity: v_at(t),
-                penetration: draft - s_at(t),
-            }
-        })
-        .collect();
+    let samples = entry_samples(rm, omega_e, zeta_a, draft, t_entry, max_depth, n, false);
     Some(KeelEntry {
         x: rm.x,
         t_entry,
