@@ -251,13 +251,13 @@ mod callout_tests {
 
     #[test]
     fn names_keep_their_gap_and_stay_in_the_plot() {
-        let z = [0.0, 0.0, 0.001, 0.05, 0.3];
+        let z = [0.0, 0.0, 0.001, 0.1, 0.3];
         let h = callout_heights(&z, 0.02, -0.01, 0.31);
         for w in h.windows(2) {
             assert!(w[1] - w[0] >= 0.02 - 1e-12, "{h:?}");
         }
         assert!(h.iter().all(|&v| v > -0.01 && v < 0.31), "{h:?}");
         // a sensor with room around it keeps its own height
-        assert!((h[3] - 0.05).abs() < 1e-12);
+        assert!((h[3] - 0.1).abs() < 1e-12, "{h:?}");
     }
 }
