@@ -205,7 +205,8 @@ fn block_source(b: &Block, s: &mut String, files: &mut Vec<(String, Vec<u8>)>) {
                 .collect();
             let mut cells: Vec<String> = header
                 .iter()
-                .map(|h| format!("strong({})", typst_string(h)))
+                // a zero-width space after each underscore lets snake_case headers wrap
+                .map(|h| format!("strong({})", typst_string(&h.replace('_', "_\u{200B}"))))
                 .collect();
             for r in rows {
                 for j in 0..n {
