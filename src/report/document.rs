@@ -223,7 +223,8 @@ fn block_source(b: &Block, s: &mut String, files: &mut Vec<(String, Vec<u8>)>) {
                     .unwrap_or(0)
             };
             let total: usize = (0..header.len()).map(widest).sum();
-            let columns = if total > WIDE_TABLE_CHARS && !header.is_empty() {
+            let wide = total > WIDE_TABLE_CHARS && !header.is_empty();
+            let columns = if wide {
                 // Each wide text column gets a share of the free width in proportion to its text.
                 let cols: Vec<String> = (0..n)
                     .map(|j| {
@@ -238,8 +239,14 @@ fn block_source(b: &Block, s: &mut String, files: &mut Vec<(String, Vec<u8>)>) {
             } else {
                 n.to_string()
             };
+            // wide tables are set a little smaller (a scoped show rule after the preamble's)
+            let (open, close) = if wide {
+                ("#[#show table: set text(size: 7.2pt)\n", "]")
+            } else {
+                ("", "")
+            };
             s.push_str(&format!(
-                "#figure(kind: table, caption: {}, table(columns: {columns}, align: ({}), table.header({}), {}))\n\n",
+                "{open}#figure(kind: table, caption: {}, table(columns: {columns}, align: ({}), table.header({}), {})){close}\n\n",
                 typst_string(caption),
                 align.join(", "),
                 cells[..n].join(", "),
