@@ -17,8 +17,14 @@ fn ochi_body_plan_has_sections_waterlines_and_sensors() {
     // One polyline per section and side (midship on both), plus the axes' own lines.
     let polylines = svg.matches("<polyline").count();
     assert!(polylines >= hull.stations.len(), "{polylines} polylines");
+    // each sensor named once, in the callout column (a text element of its own)
     for s in &hull.sensors {
-        assert!(svg.contains(&format!(" {} ", s.name)), "sensor {}", s.name);
+        assert_eq!(
+            svg.matches(&format!("\n {}\n", s.name)).count(),
+            1,
+            "sensor {}",
+            s.name
+        );
     }
     for l in &hull.loadings {
         assert!(svg.contains(&format!("waterline {}: T", l.name)));
