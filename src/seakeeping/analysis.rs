@@ -124,6 +124,36 @@ pub struct RegularStation {
     pub relative_motion: relative_motion::RelativeMotion,
 }
 
+impl RegularStation {
+    /// The station `s` in a regular wave of amplitude `zeta_a` and encounter frequency `omega_e`, from its
+    /// relative motion per unit amplitude `rm`; the keel-entry profile (if the keel emerges) has
+    /// `profile_samples` samples.
+    pub fn new(
+        s: &Station,
+        rm: relative_motion::RelativeMotion,
+        omega_e: f64,
+        zeta_a: f64,
+        profile_samples: usize,
+    ) -> Self {
+        RegularStation {
+            aft_of_fp: s.aft_of_fp,
+            x: s.x,
+            draft: s.draft,
+            relative_motion_m: rm.motion.norm() * zeta_a,
+            relative_velocity_m_s: rm.velocity.norm() * zeta_a,
+            keel_entry: relative_motion::keel_entry(
+                &rm,
+                omega_e,
+                zeta_a,
+                s.draft,
+                s.height,
+                profile_samples,
+            ),
+            relative_motion: rm,
+        }
+    }
+}
+
 #[derive(Debug, Clone, Serialize)]
 pub struct IrregularResult {
     pub sea: String,
@@ -272,22 +302,13 @@ pub fn run(model: &ShipModel, req: &Request) -> Result<Report> {
             let mut st = Vec::new();
             for s in &req.stations {
                 let rm = relative_motion::at_station(&r, s.x, req.swell_up)?;
-                st.push(RegularStation {
-                    aft_of_fp: s.aft_of_fp,
-                    x: s.x,
-                    draft: s.draft,
-                    relative_motion_m: rm.motion.norm() * za,
-                    relative_velocity_m_s: rm.velocity.norm() * za,
-                    keel_entry: relative_motion::keel_entry(
-                        &rm,
-                        r.omega_e,
-                        za,
-                        s.draft,
-                        s.height,
-                        req.profile_samples,
-                    ),
-                    relative_motion: rm,
-                });
+                st.push(RegularStation::new(
+                    s,
+                    rm,
+                    r.omega_e,
+                    za,
+                    req.profile_samples,
+                ));
             }
             regular.push(RegularResult {
                 wave: w.name.clone(),

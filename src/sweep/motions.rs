@@ -135,22 +135,7 @@ impl<'a> VariantModel<'a> {
             let za = w.amplitude();
             for (s, sensors) in self.stations.iter().zip(&self.sensors) {
                 let rm = relative_motion::at_station(&r, s.x, 1.0)?;
-                let st = RegularStation {
-                    aft_of_fp: s.aft_of_fp,
-                    x: s.x,
-                    draft: s.draft,
-                    relative_motion_m: rm.motion.norm() * za,
-                    relative_velocity_m_s: rm.velocity.norm() * za,
-                    keel_entry: relative_motion::keel_entry(
-                        &rm,
-                        r.omega_e,
-                        za,
-                        s.draft,
-                        s.height,
-                        PROFILE_SAMPLES,
-                    ),
-                    relative_motion: rm,
-                };
+                let st = RegularStation::new(s, rm, r.omega_e, za, PROFILE_SAMPLES);
                 let entry = match &st.keel_entry {
                     Some(k) => Some(EntryCase {
                         half_points: hull.section_at(st.x)?.points.clone(),
