@@ -135,6 +135,25 @@ fn sph_assessment_is_thread_independent_cached_and_resumable() {
         .filter(|e| e.file_name().to_string_lossy().starts_with(".tmp"))
         .collect();
     assert!(left.is_empty(), "temporaries left: {left:?}");
+    // The cost bound counts the runs still to make: none here, so even a zero bound passes.
+    let bound = |b: f64| Settings {
+        max_wall_s: Some(b),
+        ..settings(Fidelity::Sph, 2)
+    };
+    assess::run(&h, &sea, &bound(0.0), &one, &quiet).unwrap();
+    // A fresh folder with a bound below the estimate is refused before any run, naming the override.
+    let fresh = d.path().join("fresh");
+    let err = assess::run(&h, &sea, &bound(1e-3), &fresh, &quiet)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("--force") && err.contains("estimated wall time"),
+        "{err}"
+    );
+    let made = std::fs::read_dir(fresh.join("cache"))
+        .map(|r| r.count())
+        .unwrap_or(0);
+    assert_eq!(made, 0, "no run may start");
 }
 
 #[test]

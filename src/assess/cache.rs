@@ -16,10 +16,16 @@ use super::results::SphRecord;
 /// The record of a run inside its cache entry.
 pub const RECORD: &str = "event.json";
 
+/// Version of what a cache entry's record holds and means; part of every key, so that a change to the
+/// record (2: sensors carry `wetted` and `still_rising`) makes earlier entries miss instead of being
+/// read with defaults.
+pub const RECORD_FORMAT: u32 = 2;
+
 /// The cache key of a run.
 pub fn key(setup: &Setup, study: &StudyPlan) -> Result<String> {
     let canonical = serde_json::to_string(&serde_json::json!({
         "tool": TOOL,
+        "record_format": RECORD_FORMAT,
         "setup": setup,
         "study": study,
     }))

@@ -39,6 +39,13 @@ fn verdict(s: &RunSummary, name: &str) -> (Option<String>, Option<String>) {
 
 /// What the assessment keeps of a finished run.
 fn record(key: &str, s: &RunSummary) -> SphRecord {
+    let v_max = s
+        .setup
+        .motion
+        .as_ref()
+        .and_then(|m| m.build().ok())
+        .map_or(0.0, |m| m.max_speed(s.t_end_s));
+    let dry_below = results::DRY_FRACTION * 0.5 * s.setup.rho0 * v_max * v_max;
     SphRecord {
         key: key.to_string(),
         dp_m: s.dp_m,
@@ -65,6 +72,8 @@ fn record(key: &str, s: &RunSummary) -> SphRecord {
                     impulse_pa_s: q.summary.raw.impulse,
                     convergence: c,
                     convergence_statement: st,
+                    wetted: q.summary.raw.value >= dry_below,
+                    still_rising: q.summary.at_record_end,
                 }
             })
             .collect(),
@@ -73,14 +82,14 @@ fn record(key: &str, s: &RunSummary) -> SphRecord {
     }
 }
 
-/// One SPH run of an event, from the cache when allowed and present.
-fn sph_event(
+/// The SPH setup of an event: the section, its v(t) and sensors, the automatic choices of the solver
+/// (resolution, tank, sound speed, end time) and the physical low-pass cut-off of its sensor records
+/// ([`cutoff::slamming_cutoff`]) unless the overrides give one.
+fn event_setup(
     e: &Event,
-    out: &Path,
     overrides: &sph::Overrides,
     study: StudyPlan,
-    use_cache: bool,
-) -> Result<SphRecord> {
+) -> Result<sph::case::Setup> {
     let case = e
         .entry
         .as_ref()
@@ -112,11 +121,21 @@ fn sph_event(
         setup.filter_cutoff_hz = c.hz;
         setup.notes.push(c.note);
     }
-    let key = cache::key(&setup, &study)?;
-    if use_cache && let Some(r) = cache::lookup(out, &key) {
+    Ok(setup)
+}
+
+/// One SPH run of an event's `setup` (cache key `key`), from the cache when allowed and present.
+fn sph_event(
+    setup: sph::case::Setup,
+    key: &str,
+    out: &Path,
+    study: StudyPlan,
+    use_cache: bool,
+) -> Result<SphRecord> {
+    if use_cache && let Some(r) = cache::lookup(out, key) {
         return Ok(r);
     }
-    let tmp = cache::temporary(out, &key)?;
+    let tmp = cache::temporary(out, key)?;
     let opts = RunOptions {
         out_dir: Some(tmp.clone()),
         ..Default::default()
@@ -128,9 +147,65 @@ fn sph_event(
             return Err(err);
         }
     };
-    let rec = record(&key, &r.summary);
-    cache::commit(out, &key, &tmp, &rec)?;
+    let rec = record(key, &r.summary);
+    cache::commit(out, key, &tmp, &rec)?;
     Ok(rec)
+}
+
+/// An SPH run the assessment will make: its event, setup and cache key, and whether the cache already
+/// holds it.
+struct Job {
+    event: usize,
+    setup: Result<(sph::case::Setup, String)>,
+    cached: bool,
+}
+
+/// The up-front cost of the SPH runs of an assessment that are not in the cache: how many, their
+/// particle-steps (with the convergence companions) and the estimated wall time on `threads` threads.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Cost {
+    pub runs: usize,
+    pub cached: usize,
+    pub particle_steps: f64,
+    pub wall_s: f64,
+    pub threads: usize,
+}
+
+impl Cost {
+    /// One line for the terminal.
+    pub fn describe(&self) -> String {
+        format!(
+            "{} SPH run(s) to make ({} already in the cache): {:.2e} particle-steps with the convergence \
+             companions, estimated wall time {} on {} thread(s)",
+            self.runs,
+            self.cached,
+            self.particle_steps,
+            sph::cost::human_time(self.wall_s),
+            self.threads
+        )
+    }
+}
+
+fn cost_of(jobs: &[Job], study: StudyPlan, threads: usize) -> Cost {
+    let mut c = Cost {
+        runs: 0,
+        cached: 0,
+        particle_steps: 0.0,
+        wall_s: 0.0,
+        threads: threads.max(1),
+    };
+    for j in jobs {
+        match (&j.setup, j.cached) {
+            (Ok(_), true) => c.cached += 1,
+            (Ok((setup, _)), false) => {
+                c.runs += 1;
+                c.particle_steps += sph::cost::estimate(setup, study, 1).particle_steps;
+            }
+            (Err(_), _) => {}
+        }
+    }
+    c.wall_s = c.particle_steps / (sph::cost::PARTICLE_STEPS_PER_THREAD_S * c.threads as f64);
+    c
 }
 
 /// What the SPH section force of a flare event holds besides the slam: the hydrostatic buoyancy of the
@@ -220,18 +295,51 @@ pub fn run(
         .into_iter()
         .map(|r| r.and_then(|x| x.ok()))
         .collect();
-    let jobs = sph_events(&plan, &estimates, s.fidelity);
+    let jobs: Vec<Job> = sph_events(&plan, &estimates, s.fidelity)
+        .into_par_iter()
+        .map(|i| {
+            let setup = event_setup(&plan.events[i], &s.overrides, s.study)
+                .and_then(|st| cache::key(&st, &s.study).map(|k| (st, k)));
+            let cached = s.use_cache
+                && setup
+                    .as_ref()
+                    .is_ok_and(|(_, k)| cache::lookup(out, k).is_some());
+            Job {
+                event: i,
+                setup,
+                cached,
+            }
+        })
+        .collect();
+    let threads = s.threads.unwrap_or_else(rayon::current_num_threads).max(1);
+    let cost = cost_of(&jobs, s.study, threads);
+    if !jobs.is_empty() {
+        progress.note(&cost.describe());
+    }
+    if let Some(bound) = s.max_wall_s
+        && cost.wall_s > bound
+    {
+        return Err(Error::Invalid(format!(
+            "this assessment would take about {} ({}): more than the {} bound. Choose a coarser \
+             --resolution, fewer --station or --speeds, or --fidelity screen, or give --force to run it anyway",
+            sph::cost::human_time(cost.wall_s),
+            cost.describe(),
+            sph::cost::human_time(bound)
+        )));
+    }
     let done = AtomicUsize::new(0);
     if !jobs.is_empty() {
         progress.start("assessment runs", jobs.len() as f64, "runs");
     }
     let work = || -> Vec<(usize, Result<SphRecord>)> {
-        jobs.par_iter()
-            .map(|&i| {
-                let r = sph_event(&plan.events[i], out, &s.overrides, s.study, s.use_cache);
+        jobs.into_par_iter()
+            .map(|j| {
+                let r = j
+                    .setup
+                    .and_then(|(st, key)| sph_event(st, &key, out, s.study, s.use_cache));
                 let n = done.fetch_add(1, Ordering::Relaxed) + 1;
-                progress.update(n as f64, &plan.events[i].label());
-                (i, r)
+                progress.update(n as f64, &plan.events[j.event].label());
+                (j.event, r)
             })
             .collect()
     };
@@ -243,7 +351,7 @@ pub fn run(
             .install(work),
         None => work(),
     };
-    if !jobs.is_empty() {
+    if !ran.is_empty() {
         progress.finish();
     }
     let mut sph_of: Vec<Option<Result<SphRecord>>> = plan.events.iter().map(|_| None).collect();
@@ -267,6 +375,9 @@ pub fn run(
         };
         if let Some(a) = &estimates[i] {
             warnings.extend(a.notes.iter().map(|n| format!("analytic: {n}")));
+        }
+        if let Some(r) = &sph {
+            warnings.extend(results::sensor_warnings(r, estimates[i].as_ref()));
         }
         if let (Some(f), Some(r), Some(case)) = (&e.flare, &sph, &e.entry) {
             warnings.push(buoyancy_note(f.immersion_m, case, r.force_peak_time_s));

@@ -59,6 +59,9 @@ pub struct Settings {
     pub use_cache: bool,
     /// Parallel SPH runs (None: rayon's default, one per core).
     pub threads: Option<usize>,
+    /// Refuse, before any SPH run starts, an assessment whose estimated wall time for the runs not yet in
+    /// the cache exceeds this (s); None: no bound.
+    pub max_wall_s: Option<f64>,
     /// Design pressure limits (`--max-pressure-kpa`, the hull file's `[limits]`); violations are listed in
     /// the results.
     pub limits: Vec<super::limits::Limit>,
@@ -80,6 +83,7 @@ impl Default for Settings {
             strips: 31,
             use_cache: true,
             threads: None,
+            max_wall_s: None,
             limits: Vec::new(),
             design_basis: super::design_event::Basis::MostProbableLargest,
             warnings: Vec::new(),

@@ -25,6 +25,65 @@ pub struct SphSensor {
     /// not_wetted) and its statement.
     pub convergence: Option<String>,
     pub convergence_statement: Option<String>,
+    /// Whether the SPH water reached the sensor with a slamming pressure: its raw peak is at least
+    /// [`DRY_FRACTION`] x 1/2 rho V^2 (V the largest entry speed of the run). A dry sensor's design value
+    /// is the analytic one ([`EventResult::sensor_peak`]).
+    #[serde(default = "yes")]
+    pub wetted: bool,
+    /// Whether the raw peak is the last sample of the record: the pressure was still rising when the run
+    /// ended.
+    #[serde(default)]
+    pub still_rising: bool,
+}
+
+fn yes() -> bool {
+    true
+}
+
+/// A sensor whose SPH peak stays below this fraction of the dynamic pressure 1/2 rho V^2 of the entry
+/// saw no slam in the run: a slamming pressure coefficient is of order one or more (Wagner: Cp =
+/// (pi^2/4) cot^2 beta, 1 at 57 deg of deadrise), and a sensor that one layer of particles covers at
+/// rest reads rho g dp, well above a splash. Such a sensor was not wetted by the impact within the run,
+/// most often because the flow separated from the contour below it.
+pub const DRY_FRACTION: f64 = 0.05;
+
+/// The warnings an SPH run's sensors raise in an assessment: a sensor the SPH water did not reach
+/// (with the analytic value that stands in for it), and a peak still rising when the run ended.
+pub fn sensor_warnings(r: &SphRecord, analytic: Option<&Estimate>) -> Vec<String> {
+    let mut out = Vec::new();
+    for q in &r.sensors {
+        if !q.wetted {
+            let a = analytic
+                .and_then(|a| a.sensors.iter().find(|s| s.name == q.name))
+                .map_or_else(
+                    || "no analytic estimate either".to_string(),
+                    |s| {
+                        format!(
+                            "its design value is the analytic (MLM) peak, {:.2} kPa, which assumes the flow \
+                             stays attached and is therefore the conservative value",
+                            s.peak_pa * 1e-3
+                        )
+                    },
+                );
+            out.push(format!(
+                "sensor {}: the SPH water did not reach it with a slamming pressure within the run (raw peak \
+                 {:.3} kPa, below {DRY_FRACTION} x 1/2 rho V^2): the flow separated from the contour below \
+                 it or reached it only after the run; {a}",
+                q.name,
+                q.raw_peak_pa * 1e-3
+            ));
+        } else if q.still_rising {
+            out.push(format!(
+                "sensor {}: the SPH pressure was still rising when the run ended (raw peak {:.3} kPa at \
+                 {:.4} s, the last sample): the impact peak may come later, or the load is the growing \
+                 hydrostatic pressure of the deepening immersion",
+                q.name,
+                q.raw_peak_pa * 1e-3,
+                q.peak_time_s
+            ));
+        }
+    }
+    out
 }
 
 /// What an assessment keeps of an SPH run (also the record in its cache entry).
@@ -89,21 +148,22 @@ impl EventResult {
         }
     }
 
-    /// A sensor's peak used for design (Pa): the SPH raw peak where run, otherwise the analytic one.
+    /// A sensor's peak used for design (Pa): the SPH raw peak where run, otherwise (no run, or a sensor
+    /// the run did not wet) the analytic one.
     pub fn sensor_peak(&self, name: &str) -> Option<(f64, &'static str)> {
+        let analytic = || {
+            self.analytic
+                .as_ref()
+                .and_then(|a| a.sensors.iter().find(|q| q.name == name).map(|q| q.peak_pa))
+        };
         if let Some(s) = &self.sph {
-            return s
-                .sensors
-                .iter()
-                .find(|q| q.name == name)
-                .map(|q| (q.raw_peak_pa, "sph"));
+            let q = s.sensors.iter().find(|q| q.name == name)?;
+            if q.wetted {
+                return Some((q.raw_peak_pa, "sph"));
+            }
+            return analytic().map(|v| (v, "analytic (dry in SPH)"));
         }
-        self.analytic.as_ref().and_then(|a| {
-            a.sensors
-                .iter()
-                .find(|q| q.name == name)
-                .map(|q| (q.peak_pa, "analytic"))
-        })
+        analytic().map(|v| (v, "analytic"))
     }
 }
 
@@ -112,7 +172,8 @@ impl EventResult {
 pub struct DesignValue {
     pub name: String,
     pub value: f64,
-    /// "sph" or "analytic".
+    /// "sph", "analytic", or "analytic (dry in SPH)" for a sensor the SPH run did not wet
+    /// ([`SphSensor::wetted`]).
     pub source: &'static str,
     pub speed_m_per_s: f64,
     pub wave: String,
@@ -407,4 +468,93 @@ pub fn write_motions(dir: &Path, m: &crate::seakeeping::analysis::Report) -> Res
 /// The tool name and version, as every summary gives it.
 pub fn tool() -> String {
     TOOL.to_string()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::assess::analytic::SensorEstimate;
+
+    fn sph_sensor(name: &str, peak: f64, wetted: bool, still_rising: bool) -> SphSensor {
+        SphSensor {
+            name: name.into(),
+            raw_peak_pa: peak,
+            filtered_peak_pa: None,
+            peak_time_s: 0.05,
+            impulse_pa_s: 1.0,
+            convergence: None,
+            convergence_statement: None,
+            wetted,
+            still_rising,
+        }
+    }
+
+    fn event() -> EventResult {
+        let analytic = Estimate {
+            force_peak_n_per_m: 300.0,
+            force_peak_time_s: 0.03,
+            sensors: ["K1", "K2", "K3"]
+                .iter()
+                .map(|n| SensorEstimate {
+                    name: (*n).into(),
+                    peak_pa: 3750.0,
+                    peak_time_s: 0.02,
+                    impulse_pa_s: 2.0,
+                    acoustic_bound_pa: None,
+                })
+                .collect(),
+            notes: Vec::new(),
+            force_history: Vec::new(),
+        };
+        let sph = SphRecord {
+            key: "k".into(),
+            dp_m: 0.0015,
+            filter_cutoff_hz: None,
+            filter_rule: None,
+            force_peak_n_per_m: 250.0,
+            force_peak_time_s: 0.05,
+            force_convergence: None,
+            sensors: vec![
+                sph_sensor("K1", 2780.0, true, false),
+                sph_sensor("K2", 1120.0, true, true),
+                sph_sensor("K3", 47.0, false, false),
+            ],
+            stopped_early: None,
+            warnings: Vec::new(),
+        };
+        EventResult {
+            station: 0.1,
+            x_m: 1.2,
+            speed_m_per_s: 1.6,
+            wave: "w".into(),
+            slam_flag: SlamFlag::Slam,
+            entry_velocity_m_per_s: Some(1.76),
+            entry_kind: None,
+            flare_event: None,
+            design_event: None,
+            analytic: Some(analytic),
+            sph: Some(sph),
+            run_folder: None,
+            failed: None,
+            warnings: Vec::new(),
+        }
+    }
+
+    #[test]
+    fn a_sensor_the_sph_did_not_wet_takes_the_analytic_design_value_and_says_so() {
+        let e = event();
+        assert_eq!(e.sensor_peak("K1"), Some((2780.0, "sph")));
+        assert_eq!(e.sensor_peak("K3"), Some((3750.0, "analytic (dry in SPH)")));
+        let st = stations(std::slice::from_ref(&e), &[(0.1, 1.2)]);
+        let k3 = st[0]
+            .design_pressure_pa
+            .iter()
+            .find(|d| d.name == "K3")
+            .unwrap();
+        assert_eq!(k3.source, "analytic (dry in SPH)");
+        let w = sensor_warnings(e.sph.as_ref().unwrap(), e.analytic.as_ref());
+        assert_eq!(w.len(), 2, "{w:?}");
+        assert!(w[0].starts_with("sensor K2") && w[0].contains("still rising"));
+        assert!(w[1].starts_with("sensor K3") && w[1].contains("3.75 kPa"));
+    }
 }

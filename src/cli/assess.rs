@@ -84,7 +84,8 @@ pub struct AssessArgs {
     /// the cached ones).
     #[arg(long)]
     no_cache: bool,
-    /// Write into an output folder that holds files of something other than an assessment.
+    /// Write into an output folder that holds files of something other than an assessment, and run an
+    /// assessment whose SPH runs are estimated to take more than an hour.
     #[arg(long)]
     force: bool,
     /// Do not write the report (report.pdf, figures/) at the end; `slamtool report OUT` writes it later.
@@ -203,6 +204,7 @@ pub fn run(a: AssessArgs) -> Result<()> {
                 assess::design_event::Basis::RiskLevel(r)
             }),
         threads: a.threads,
+        max_wall_s: (!a.force).then_some(slamtool::sph::cost::MAX_WALL_S),
         ..Settings::default()
     };
     let (result, _written) = assess::run(&hull, &sea, &settings, &out, &progress_bar::handle())?;

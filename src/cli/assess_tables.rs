@@ -72,6 +72,19 @@ pub fn tables(a: &Assessment) -> String {
                 d.wave
             );
         }
+        let dry: Vec<&str> = st
+            .design_pressure_pa
+            .iter()
+            .filter(|d| d.source == "analytic (dry in SPH)")
+            .map(|d| d.name.as_str())
+            .collect();
+        if !dry.is_empty() {
+            s += &format!(
+                "    ({}: the SPH water did not reach the sensor with a slamming pressure; the analytic value, \
+                 which assumes attached flow, stands in. See the event's warnings.)\n",
+                dry.join(", ")
+            );
+        }
     }
     if !a.irregular.is_empty() {
         s += &format!(
@@ -125,6 +138,13 @@ pub fn tables(a: &Assessment) -> String {
                 d.definition
             );
         }
+    }
+    let event_warnings: usize = a.events.iter().map(|e| e.warnings.len()).sum();
+    if event_warnings > 0 {
+        s += &format!(
+            "\n{event_warnings} warning(s) on the events: summary.json (events[].warnings) and the report's \
+             warnings chapter\n"
+        );
     }
     if !a.bow_force.is_empty() {
         s += "\ntotal bow slamming force (section force integrated along the bow; see bow_force.csv):\n";

@@ -23,6 +23,8 @@ impl Progress for Bars {
             Some((total * SCALE).round().max(1.0) as u64),
             ProgressDrawTarget::stderr_with_hz(4),
         );
+        // Whole units (runs) are counted as integers; fractional ones (ms of simulated time) to 0.1.
+        let decimals = if total.fract() == 0.0 { 0 } else { 1 };
         let template = format!(
             "{{prefix}} [{{bar:30}}] {{human_pos_f}} / {{total_f}} {unit}  eta {{eta}}  {{msg}}"
         );
@@ -30,14 +32,14 @@ impl Progress for Bars {
             .unwrap_or_else(|_| ProgressStyle::default_bar())
             .with_key(
                 "human_pos_f",
-                |s: &indicatif::ProgressState, w: &mut dyn std::fmt::Write| {
-                    let _ = write!(w, "{:.3}", s.pos() as f64 / SCALE);
+                move |s: &indicatif::ProgressState, w: &mut dyn std::fmt::Write| {
+                    let _ = write!(w, "{:.*}", decimals, s.pos() as f64 / SCALE);
                 },
             )
             .with_key(
                 "total_f",
-                |s: &indicatif::ProgressState, w: &mut dyn std::fmt::Write| {
-                    let _ = write!(w, "{:.3}", s.len().unwrap_or(0) as f64 / SCALE);
+                move |s: &indicatif::ProgressState, w: &mut dyn std::fmt::Write| {
+                    let _ = write!(w, "{:.*}", decimals, s.len().unwrap_or(0) as f64 / SCALE);
                 },
             )
             .progress_chars("=> ");

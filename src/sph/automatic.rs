@@ -139,10 +139,27 @@ pub fn time_to_depth(m: &Motion, depth: f64, t_max: f64) -> Option<(f64, bool)> 
     }
 }
 
+/// Height above the keel of the upper edge of the highest sensor (m); `None` without sensors.
+pub fn sensor_top_height(section: &Section, sensors: &[SensorSpec]) -> Option<f64> {
+    let len = half_contour_length(section);
+    sensors
+        .iter()
+        .filter_map(|s| point_at_arc(section, (s.s_m + 0.5 * s.width_m).min(len)))
+        .map(|p| p[1])
+        .reduce(f64::max)
+}
+
 /// End time: the impact is over when Wagner's wetted contour has reached the chine (or the widest point,
 /// or past the highest sensor: [`wetting_target`]) and the force has passed its maximum there
 /// ([`END_MARGIN`] times the wetting time), or when the entry velocity has fallen to zero, whichever
 /// comes first; never past the keel reaching 0.9 of the section height (the deck would go under).
+///
+/// Wagner's condition over-predicts the pile-up of the water on steep sides (it tends to pi/2 times the
+/// calm-water intersection at every deadrise, where the exact wedge solutions tend to 1 as the deadrise
+/// tends to 90 deg; Zhao & Faltinsen 1993), so a run ended by it alone can end before the water reaches
+/// the upper sensors of a steep section. The wetting time is therefore never taken shorter than the time
+/// at which the calm-water line itself reaches the upper edge of the highest sensor (pile-up factor 1,
+/// the von Karman limit, which no pile-up undercuts).
 ///
 /// For a section that starts immersed to the keel depth `d0` (0 for a keel entry), depths count from the
 /// start: the wetting uses Wagner's condition with the initial immersion
@@ -156,23 +173,31 @@ pub fn end_time(section: &Section, m: &Motion, sensors: &[SensorSpec], dp: f64, 
     } else {
         wetting_penetration(section, y_target)
     };
-    let (depth, what) = match wet {
-        Some(d) if d >= min_depth => (d, what),
+    let (mut depth, mut what) = match wet {
+        Some(d) if d >= min_depth => (d, format!("Wagner's wetted half-width reaches {what}")),
         _ => (
             min_depth,
             format!(
-                "{what}, which a flat keel reaches at contact; the run goes on to a keel depth of \
-                 {MIN_PENETRATION_DP} particle spacings"
+                "Wagner's wetted half-width reaches {what}, which a flat keel reaches at contact; the run goes \
+                 on to a keel depth of {MIN_PENETRATION_DP} particle spacings"
             ),
         ),
     };
+    if let Some(z_top) = sensor_top_height(section, sensors)
+        && z_top - d0 > depth
+    {
+        depth = z_top - d0;
+        what = format!(
+            "the calm-water line reaches the upper edge of the highest sensor ({z_top:.4} m above the keel; \
+             Wagner's condition, which over-predicts the pile-up on steep sides, puts the wetting there \
+             sooner)"
+        );
+    }
     let depth = depth.min(0.9 * section.height() - d0);
     match time_to_depth(m, depth, t_max) {
         Some((t, true)) => Choice {
             value: t,
-            note: format!(
-                "t_end = {t:.5} s: the entry velocity falls to zero before the wetting reaches {what}"
-            ),
+            note: format!("t_end = {t:.5} s: the entry velocity falls to zero before {what}"),
         },
         Some((t, false)) => {
             let tm = END_MARGIN * t;
@@ -185,9 +210,9 @@ pub fn end_time(section: &Section, m: &Motion, sensors: &[SensorSpec], dp: f64, 
             Choice {
                 value,
                 note: format!(
-                    "t_end = {value:.5} s: {END_MARGIN} x the time ({t:.5} s) at which Wagner's wetted half-width \
-                     reaches {what}, so that the force passes its maximum (at most until the entry velocity \
-                     reverses or the keel is 0.9 x the height deep)"
+                    "t_end = {value:.5} s: {END_MARGIN} x the time ({t:.5} s) at which {what}, so that the force \
+                     and the sensor pressures pass their maxima (at most until the entry velocity reverses or \
+                     the keel is 0.9 x the height deep)"
                 ),
             }
         }
@@ -243,5 +268,62 @@ pub fn sound_speed(section: &Section, v_max: f64, g: f64, tank_depth: f64) -> Ch
              the depth of the tank the run uses)",
             beta.to_degrees()
         ),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sensor(s_m: f64, width_m: f64) -> SensorSpec {
+        SensorSpec {
+            name: "P".into(),
+            s_m,
+            width_m,
+        }
+    }
+
+    /// On a steep wedge Wagner's pile-up (pi/2) would end the run before the calm-water line reaches
+    /// a sensor at the top of the V; the run now lasts until it does (times the margin).
+    #[test]
+    fn a_steep_section_runs_until_the_calm_water_line_passes_the_highest_sensor() {
+        let beta = 60f64.to_radians();
+        let b = 0.1;
+        let sec = Section::wedge(beta, b, 1.5 * b * beta.tan()).unwrap();
+        let side = b / beta.cos();
+        let q = [sensor(side - 0.01, 0.02)];
+        let v = 2.0;
+        let c = end_time(&sec, &Motion::Constant { speed: v }, &q, 0.002, 0.0);
+        let z_top = sensor_top_height(&sec, &q).unwrap();
+        assert!((z_top - b * beta.tan()).abs() < 1e-9, "{z_top}");
+        let wagner = wetting_penetration(&sec, b).unwrap();
+        assert!(wagner < 0.7 * z_top, "Wagner {wagner} vs {z_top}");
+        assert!(
+            (c.value - END_MARGIN * z_top / v).abs() < 1e-9,
+            "{} {}",
+            c.value,
+            c.note
+        );
+        assert!(c.note.contains("calm-water line"), "{}", c.note);
+    }
+
+    /// Where Wagner's wetting of the chine comes later than the calm-water line at the highest sensor
+    /// (a low sensor on a shallow wedge) the rule is unchanged.
+    #[test]
+    fn a_low_sensor_on_a_shallow_wedge_keeps_the_wagner_end_time() {
+        let beta = 20f64.to_radians();
+        let b = 0.2;
+        let sec = Section::wedge(beta, b, 1.5 * b * beta.tan()).unwrap();
+        let q = [sensor(0.05, 0.01)];
+        let v = 3.0;
+        let c = end_time(&sec, &Motion::Constant { speed: v }, &q, 0.002, 0.0);
+        let wagner = wetting_penetration(&sec, b).unwrap();
+        assert!(
+            (c.value - END_MARGIN * wagner / v).abs() < 1e-9,
+            "{} {}",
+            c.value,
+            c.note
+        );
+        assert!(c.note.contains("Wagner"), "{}", c.note);
     }
 }
