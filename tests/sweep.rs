@@ -361,3 +361,62 @@ fn hull_variants_keep_the_underwater_form_or_scale_it_as_defined() {
         "{grow0} {grow1}"
     );
 }
+
+/// A sweep makes the same events as `assess`: where the keel stays in the water but the water reaches a
+/// flare panel (the Hermundstad & Moan car carrier at 0.05 Lpp), a flare event gives the panel a design
+/// pressure, equal to the assessment's.
+#[test]
+fn a_sweep_case_gets_the_flare_event_of_an_immersed_keel() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = format!(
+        "name = \"flare\"\nhull = \"{ROOT}/hulls/car-carrier-hm2005.toml\"\nsea = \
+         \"{ROOT}/sea_states/car-carrier-hm2005.toml\"\nfidelity = \"analytic\"\n\n[bow_region]\n\
+         full_aft_of_fp = 0.05\nzero_aft_of_fp = 0.2\n\n[grid]\nflare_scale = [1.0]\n"
+    );
+    let f = dir.path().join("flare.toml");
+    std::fs::write(&f, text).unwrap();
+    let r = sweep::run(&f, &opts(&dir.path().join("out")), &Default::default()).unwrap();
+    assert_eq!(r.failed_cases, 0, "{:?}", r.warnings);
+    let st = &r.cases[0].stations[0];
+    assert_eq!(st.emerging_events, 0, "the keel stays in the water");
+    let p1 = st
+        .sensors
+        .iter()
+        .find(|s| s.name == "P1")
+        .expect("a design pressure on the flare panel");
+    assert!(p1.design_pressure_pa > 0.0 && p1.source == "analytic");
+    // The same as the assessment of the unchanged hull, to the interpolation of the sweep's strip-theory
+    // table in frequency (measured: 4e-5).
+    let hull = slamtool::hull::Hull::from_file(Path::new(&format!(
+        "{ROOT}/hulls/car-carrier-hm2005.toml"
+    )))
+    .unwrap();
+    let sea = slamtool::sea::SeaState::from_file(Path::new(&format!(
+        "{ROOT}/sea_states/car-carrier-hm2005.toml"
+    )))
+    .unwrap();
+    let s = slamtool::assess::Settings {
+        fidelity: slamtool::assess::Fidelity::Analytic,
+        ..Default::default()
+    };
+    let (a, _) = slamtool::assess::run(
+        &hull,
+        &sea,
+        &s,
+        &dir.path().join("assess"),
+        &Default::default(),
+    )
+    .unwrap();
+    let q = a.stations[0]
+        .design_pressure_pa
+        .iter()
+        .find(|d| d.name == "P1")
+        .unwrap();
+    let rel = (p1.design_pressure_pa - q.value).abs() / q.value;
+    assert!(
+        rel < 1e-3,
+        "sweep {} vs assess {}",
+        p1.design_pressure_pa,
+        q.value
+    );
+}

@@ -301,50 +301,19 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
                     .iter()
                     .find(|q| (q.aft_of_fp - st.aft_of_fp).abs() < 1e-9)
                     .map_or(f64::INFINITY, |q| q.height);
-                let mut flare = None;
-                let entry = match &st.keel_entry {
-                    Some(k) => Some(EntryCase {
-                        half_points: points,
-                        motion: impact::entry_motion(k),
-                        sensors: here,
-                        immersion_m: 0.0,
-                    }),
-                    None => {
-                        match flare_event(st, w.omega_e, 0.5 * w.height_m, height, &points, &here) {
-                            Some((f, motion)) => {
-                                let immersion_m = f.immersion_m;
-                                flare = Some(f);
-                                Some(EntryCase {
-                                    half_points: points,
-                                    motion,
-                                    sensors: here,
-                                    immersion_m,
-                                })
-                            }
-                            None => None,
-                        }
-                    }
-                };
-                events.push(Event {
-                    station: st.aft_of_fp,
-                    x: st.x,
-                    speed_m_s: sp.speed_m_s,
-                    wave: w.wave.clone(),
+                events.push(station_event(
+                    st,
+                    &Wave {
+                        name: &w.wave,
+                        omega0: w.omega0,
+                        omega_e: w.omega_e,
+                        amplitude_m: 0.5 * w.height_m,
+                    },
+                    sp.speed_m_s,
                     flag,
-                    entry_velocity_m_s: st.keel_entry.as_ref().map(|k| k.entry_velocity),
-                    entry_time_s: st
-                        .keel_entry
-                        .as_ref()
-                        .map(|k| k.t_entry)
-                        .or(flare.as_ref().map(|f| f.start_time_s)),
-                    encounter_period_s: 2.0 * std::f64::consts::PI / w.omega_e,
-                    wave_omega_rad_s: w.omega0,
-                    wave_amplitude_m: 0.5 * w.height_m,
-                    draft_m: st.draft,
-                    design: None,
-                    flare,
-                    entry,
-                });
+                    (points, height),
+                    here,
+                ));
             }
         }
     }
@@ -390,6 +359,71 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
         events,
         warnings,
     })
+}
+
+/// A regular wave as an event needs it: its name, frequency (rad/s), encounter frequency (rad/s) and
+/// amplitude (m).
+pub struct Wave<'a> {
+    pub name: &'a str,
+    pub omega0: f64,
+    pub omega_e: f64,
+    pub amplitude_m: f64,
+}
+
+/// The event of one station at one speed in one regular wave: a keel entry where the keel emerges, a
+/// flare event where it stays immersed but the water reaches sensors above the still-water line
+/// ([`flare_event`]), otherwise none. `section` is the station's offsets (half points, keel first) and
+/// its keel-to-deck height. Shared by the assessment and the sweeps.
+pub fn station_event(
+    st: &crate::seakeeping::analysis::RegularStation,
+    w: &Wave,
+    speed_m_s: f64,
+    flag: SlamFlag,
+    section: (Vec<[f64; 2]>, f64),
+    sensors: Vec<SensorSpec>,
+) -> Event {
+    let (points, height) = section;
+    let mut flare = None;
+    let entry = match &st.keel_entry {
+        Some(k) => Some(EntryCase {
+            half_points: points,
+            motion: impact::entry_motion(k),
+            sensors,
+            immersion_m: 0.0,
+        }),
+        None => flare_event(st, w.omega_e, w.amplitude_m, height, &points, &sensors).map(
+            |(f, motion)| {
+                let immersion_m = f.immersion_m;
+                flare = Some(f);
+                EntryCase {
+                    half_points: points,
+                    motion,
+                    sensors,
+                    immersion_m,
+                }
+            },
+        ),
+    };
+    Event {
+        station: st.aft_of_fp,
+        x: st.x,
+        speed_m_s,
+        wave: w.name.to_string(),
+        flag,
+        entry_velocity_m_s: st.keel_entry.as_ref().map(|k| k.entry_velocity),
+        entry_time_s: st
+            .keel_entry
+            .as_ref()
+            .map(|k| k.t_entry)
+            .or(flare.as_ref().map(|f| f.start_time_s)),
+        encounter_period_s: 2.0 * std::f64::consts::PI / w.omega_e,
+        wave_omega_rad_s: w.omega0,
+        wave_amplitude_m: w.amplitude_m,
+        draft_m: st.draft,
+        design: None,
+        flare,
+        entry,
+    }
 }
 
 /// The flare event of a station whose keel stays immersed, and its prescribed motion: None when the keel

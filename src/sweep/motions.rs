@@ -9,7 +9,7 @@
 //! Ochi's slam statistics in each irregular sea. Natural periods and RAO tables, which an assessment
 //! prints, are not needed and not computed.
 
-use crate::assess::plan::{EntryCase, Event};
+use crate::assess::plan::{self, Event};
 use crate::error::Result;
 use crate::hull::{Hull, LoadingCondition};
 use crate::impact;
@@ -136,31 +136,19 @@ impl<'a> VariantModel<'a> {
             for (s, sensors) in self.stations.iter().zip(&self.sensors) {
                 let rm = relative_motion::at_station(&r, s.x, 1.0)?;
                 let st = RegularStation::new(s, rm, r.omega_e, za, PROFILE_SAMPLES);
-                let entry = match &st.keel_entry {
-                    Some(k) => Some(EntryCase {
-                        half_points: hull.section_at(st.x)?.points.clone(),
-                        motion: impact::entry_motion(k),
-                        sensors: sensors.clone(),
-                        immersion_m: 0.0,
-                    }),
-                    None => None,
-                };
-                events.push(Event {
-                    station: st.aft_of_fp,
-                    x: st.x,
-                    speed_m_s: speed,
-                    wave: w.name.clone(),
-                    flag: SlamFlag::of(&st, self.strip.threshold),
-                    entry_velocity_m_s: st.keel_entry.as_ref().map(|k| k.entry_velocity),
-                    entry_time_s: st.keel_entry.as_ref().map(|k| k.t_entry),
-                    encounter_period_s: 2.0 * std::f64::consts::PI / r.omega_e,
-                    wave_omega_rad_s: w.omega,
-                    wave_amplitude_m: za,
-                    draft_m: st.draft,
-                    design: None,
-                    flare: None,
-                    entry,
-                });
+                events.push(plan::station_event(
+                    &st,
+                    &plan::Wave {
+                        name: &w.name,
+                        omega0: w.omega,
+                        omega_e: r.omega_e,
+                        amplitude_m: za,
+                    },
+                    speed,
+                    SlamFlag::of(&st, self.strip.threshold),
+                    (hull.section_at(st.x)?.points.clone(), s.height),
+                    sensors.clone(),
+                ));
             }
         }
         Ok(events)
