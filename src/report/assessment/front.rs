@@ -105,12 +105,19 @@ fn irregular_names(saved: &Saved) -> Vec<String> {
     w
 }
 
-/// The verdict of an SPH sensor peak in an event ("" when no SPH run).
+/// The verdict of an SPH sensor peak in an event ("" when no SPH run; "dry in SPH" when the run did not
+/// wet the sensor, whose design value is then the analytic one and has no convergence verdict).
 pub fn verdict(e: &Value, sensor: &str) -> String {
     list(&e["sph"], "sensors")
         .iter()
         .find(|q| text(q, "name") == sensor)
-        .map(|q| text(q, "convergence").replace('_', " "))
+        .map(|q| {
+            if q["wetted"].as_bool() == Some(false) {
+                "dry in SPH".to_string()
+            } else {
+                text(q, "convergence").replace('_', " ")
+            }
+        })
         .unwrap_or_default()
 }
 
@@ -485,6 +492,19 @@ pub fn hull(r: &mut Report, saved: &Saved) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_sensor_the_sph_did_not_wet_shows_dry_instead_of_a_convergence_verdict() {
+        let e = serde_json::json!({"sph": {"sensors": [
+            {"name": "K1", "convergence": "not_converged", "wetted": true},
+            {"name": "K3", "convergence": "not_converged", "wetted": false},
+            {"name": "K4", "convergence": "converged"}
+        ]}});
+        assert_eq!(verdict(&e, "K1"), "not converged");
+        assert_eq!(verdict(&e, "K3"), "dry in SPH");
+        assert_eq!(verdict(&e, "K4"), "converged");
+        assert_eq!(verdict(&e, "K9"), "");
+    }
 
     #[test]
     fn warnings_differing_in_numbers_only_share_a_shape_but_sensor_names_do_not() {
