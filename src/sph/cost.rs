@@ -7,10 +7,11 @@ use crate::error::{Error, Result};
 use crate::sph::case::Setup;
 use crate::sph::study::StudyPlan;
 
-/// Fluid particle-steps per second and per thread assumed for the estimate: below the measured
-/// throughput of `slamtool bench` (2.8-3.0 M on one thread of the 2-core development machine), so that
-/// the estimate errs on the long side on a busy machine.
-pub const PARTICLE_STEPS_PER_THREAD_S: f64 = 2.0e6;
+/// Fluid particle-steps per second and per thread assumed for the estimate: the throughput measured on
+/// the shared 2-core development machine in real hull-section runs with their companions (2.8-3.1 M/s on
+/// two threads: the Ochi and car-carrier assessments; `slamtool bench` gave 3.0 M/s on two threads the
+/// same day). It was 2 M/s per thread, which made the estimates about 30 % short.
+pub const PARTICLE_STEPS_PER_THREAD_S: f64 = 1.4e6;
 
 /// Estimated wall time above which a run is refused unless forced (s).
 pub const MAX_WALL_S: f64 = 3600.0;
