@@ -124,17 +124,13 @@ fn event_setup(
     Ok(setup)
 }
 
-/// One SPH run of an event's `setup` (cache key `key`), from the cache when allowed and present.
+/// One SPH run of an event's `setup` (cache key `key`), committed to the cache.
 fn sph_event(
     setup: sph::case::Setup,
     key: &str,
     out: &Path,
     study: StudyPlan,
-    use_cache: bool,
 ) -> Result<SphRecord> {
-    if use_cache && let Some(r) = cache::lookup(out, key) {
-        return Ok(r);
-    }
     let tmp = cache::temporary(out, key)?;
     let opts = RunOptions {
         out_dir: Some(tmp.clone()),
@@ -152,12 +148,12 @@ fn sph_event(
     Ok(rec)
 }
 
-/// An SPH run the assessment will make: its event, setup and cache key, and whether the cache already
-/// holds it.
+/// An SPH run the assessment will make: its event, setup and cache key, and its record when the cache
+/// already holds it (and may be used).
 struct Job {
     event: usize,
     setup: Result<(sph::case::Setup, String)>,
-    cached: bool,
+    cached: Option<SphRecord>,
 }
 
 /// The up-front cost of the SPH runs of an assessment that are not in the cache: how many, their
@@ -195,16 +191,16 @@ fn cost_of(jobs: &[Job], study: StudyPlan, threads: usize) -> Cost {
         threads: threads.max(1),
     };
     for j in jobs {
-        match (&j.setup, j.cached) {
-            (Ok(_), true) => c.cached += 1,
-            (Ok((setup, _)), false) => {
+        match (&j.setup, &j.cached) {
+            (Ok(_), Some(_)) => c.cached += 1,
+            (Ok((setup, _)), None) => {
                 c.runs += 1;
                 c.particle_steps += sph::cost::estimate(setup, study, 1).particle_steps;
             }
             (Err(_), _) => {}
         }
     }
-    c.wall_s = c.particle_steps / (sph::cost::PARTICLE_STEPS_PER_THREAD_S * c.threads as f64);
+    c.wall_s = sph::cost::wall_time(c.particle_steps, c.threads);
     c
 }
 
@@ -300,10 +296,10 @@ pub fn run(
         .map(|i| {
             let setup = event_setup(&plan.events[i], &s.overrides, s.study)
                 .and_then(|st| cache::key(&st, &s.study).map(|k| (st, k)));
-            let cached = s.use_cache
-                && setup
-                    .as_ref()
-                    .is_ok_and(|(_, k)| cache::lookup(out, k).is_some());
+            let cached = match &setup {
+                Ok((_, k)) if s.use_cache => cache::lookup(out, k),
+                _ => None,
+            };
             Job {
                 event: i,
                 setup,
@@ -334,9 +330,12 @@ pub fn run(
     let work = || -> Vec<(usize, Result<SphRecord>)> {
         jobs.into_par_iter()
             .map(|j| {
-                let r = j
-                    .setup
-                    .and_then(|(st, key)| sph_event(st, &key, out, s.study, s.use_cache));
+                let r = match j.cached {
+                    Some(rec) => Ok(rec),
+                    None => j
+                        .setup
+                        .and_then(|(st, key)| sph_event(st, &key, out, s.study)),
+                };
                 let n = done.fetch_add(1, Ordering::Relaxed) + 1;
                 progress.update(n as f64, &plan.events[j.event].label());
                 (j.event, r)

@@ -47,6 +47,9 @@ fn yes() -> bool {
 /// most often because the flow separated from the contour below it.
 pub const DRY_FRACTION: f64 = 0.05;
 
+/// The design-value `source` of a sensor the SPH run did not wet, whose value is the analytic one.
+pub const DRY_SOURCE: &str = "analytic (dry in SPH)";
+
 /// The warnings an SPH run's sensors raise in an assessment: a sensor the SPH water did not reach
 /// (with the analytic value that stands in for it), and a peak still rising when the run ended.
 pub fn sensor_warnings(r: &SphRecord, analytic: Option<&Estimate>) -> Vec<String> {
@@ -161,7 +164,7 @@ impl EventResult {
             if q.wetted {
                 return Some((q.raw_peak_pa, "sph"));
             }
-            return analytic().map(|v| (v, "analytic (dry in SPH)"));
+            return analytic().map(|v| (v, DRY_SOURCE));
         }
         analytic().map(|v| (v, "analytic"))
     }

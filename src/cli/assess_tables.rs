@@ -75,7 +75,7 @@ pub fn tables(a: &Assessment) -> String {
         let dry: Vec<&str> = st
             .design_pressure_pa
             .iter()
-            .filter(|d| d.source == "analytic (dry in SPH)")
+            .filter(|d| d.source == slamtool::assess::results::DRY_SOURCE)
             .map(|d| d.name.as_str())
             .collect();
         if !dry.is_empty() {

@@ -73,10 +73,7 @@ pub fn wetting_target(section: &Section, sensors: &[SensorSpec]) -> (f64, String
     } else {
         (b, format!("the widest point (half-breadth {b:.4} m)"))
     };
-    let len = half_contour_length(section);
-    let top = sensors
-        .iter()
-        .filter_map(|s| point_at_arc(section, (s.s_m + 0.5 * s.width_m).min(len)))
+    let top = sensor_top_edges(section, sensors)
         .map(|p| p[0])
         .fold(0.0, f64::max);
     if top > target.0 {
@@ -139,12 +136,20 @@ pub fn time_to_depth(m: &Motion, depth: f64, t_max: f64) -> Option<(f64, bool)> 
     }
 }
 
-/// Height above the keel of the upper edge of the highest sensor (m); `None` without sensors.
-pub fn sensor_top_height(section: &Section, sensors: &[SensorSpec]) -> Option<f64> {
+/// The upper edge (y, z above the keel) of every sensor on the starboard contour.
+fn sensor_top_edges<'a>(
+    section: &'a Section,
+    sensors: &'a [SensorSpec],
+) -> impl Iterator<Item = [f64; 2]> + 'a {
     let len = half_contour_length(section);
     sensors
         .iter()
-        .filter_map(|s| point_at_arc(section, (s.s_m + 0.5 * s.width_m).min(len)))
+        .filter_map(move |s| point_at_arc(section, (s.s_m + 0.5 * s.width_m).min(len)))
+}
+
+/// Height above the keel of the upper edge of the highest sensor (m); `None` without sensors.
+pub fn sensor_top_height(section: &Section, sensors: &[SensorSpec]) -> Option<f64> {
+    sensor_top_edges(section, sensors)
         .map(|p| p[1])
         .reduce(f64::max)
 }

@@ -64,9 +64,15 @@ pub fn estimate(setup: &Setup, plan: StudyPlan, threads: usize) -> Estimate {
         fluid_particles: fluid,
         steps,
         particle_steps,
-        wall_s: particle_steps / (PARTICLE_STEPS_PER_THREAD_S * threads as f64),
+        wall_s: wall_time(particle_steps, threads),
         threads,
     }
+}
+
+/// Estimated wall time (s) of `particle_steps` fluid particle-steps on `threads` threads, at
+/// [`PARTICLE_STEPS_PER_THREAD_S`].
+pub fn wall_time(particle_steps: f64, threads: usize) -> f64 {
+    particle_steps / (PARTICLE_STEPS_PER_THREAD_S * threads.max(1) as f64)
 }
 
 /// Refuse a run whose estimate exceeds [`MAX_WALL_S`], unless `force`.
