@@ -1,5 +1,6 @@
-//! Records the git commit the binary is built from, for the provenance of every result. A build from a
-//! tarball (no git, or not a repository) records "unknown" and never fails.
+//! Records the git commit the binary is built from, for the provenance of every result, with "-modified"
+//! appended when the sources (src/, build.rs, Cargo.toml, Cargo.lock) differ from that commit. A build from
+//! a tarball (no git, or not a repository) records "unknown" and never fails.
 
 use std::process::Command;
 
@@ -12,8 +13,31 @@ fn git(args: &[&str]) -> Option<String> {
 
 fn main() {
     let commit = git(&["rev-parse", "HEAD"]).unwrap_or_else(|| "unknown".to_string());
+    // A build from sources that differ from the commit is marked, so that no result claims a commit it
+    // was not computed with. `git status` prints nothing (and git() gives None) for a clean tree.
+    let dirty = commit != "unknown"
+        && git(&[
+            "status",
+            "--porcelain",
+            "--untracked-files=no",
+            "--",
+            "src",
+            "build.rs",
+            "Cargo.toml",
+            "Cargo.lock",
+        ])
+        .is_some();
+    let commit = if dirty {
+        format!("{commit}-modified")
+    } else {
+        commit
+    };
     println!("cargo:rustc-env=SLAMTOOL_GIT_COMMIT={commit}");
     println!("cargo:rerun-if-changed=build.rs");
+    // Re-check the working tree whenever a source changes.
+    for p in ["src", "Cargo.toml", "Cargo.lock"] {
+        println!("cargo:rerun-if-changed={p}");
+    }
     // Rebuild when HEAD moves: HEAD itself (a branch switch) and the branch it points to (a commit). In a
     // worktree these live outside the source tree, so ask git where they are.
     let mut watch = vec![git(&["rev-parse", "--git-path", "HEAD"])];

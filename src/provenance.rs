@@ -45,7 +45,8 @@ pub struct InputFile {
 pub struct Provenance {
     /// "slamtool" and its version.
     pub tool: String,
-    /// The git commit the tool was built from ("unknown" for a build outside a git checkout).
+    /// The git commit the tool was built from, with "-modified" when the sources differed from it
+    /// ("unknown" for a build outside a git checkout).
     pub commit: String,
     pub inputs: Vec<InputFile>,
     pub settings: serde_json::Value,

@@ -156,7 +156,7 @@ impl EntryHistory {
                         }
                     };
                     out.stopped = Some(format!(
-                        "wetted half-width reached {why} at y = {:.6} m before t = {} s; Wagner-type models \
+                        "wetted half-width reached {why} at y = {:.6} m before t = {:.4} s; Wagner-type models \
                          do not apply beyond",
                         out.profile.y_end(),
                         ts[k]

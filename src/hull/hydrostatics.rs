@@ -16,6 +16,7 @@
 //! interpolated between stations (shape-preserving PCHIP, see `interpolate`), each cut by its own local
 //! waterline, so trim is exact for any station spacing.
 
+use rayon::prelude::*;
 use serde::Serialize;
 
 use super::{Hull, LoadingCondition, SectionProperties};
@@ -115,18 +116,24 @@ impl Hydrostatics {
             .collect();
         // Section properties at every quadrature node, each under its own local waterline.
         let (nodes, weights) = gauss_legendre(GAUSS_POINTS);
-        let mut samples = Vec::with_capacity((n - 1) * GAUSS_POINTS);
+        let mut at = Vec::with_capacity((n - 1) * GAUSS_POINTS);
         for w in xs.windows(2) {
             let (mid, half) = (0.5 * (w[0] + w[1]), 0.5 * (w[1] - w[0]));
             for (t, wt) in nodes.iter().zip(&weights) {
-                let x = mid + half * t;
+                at.push((mid + half * t, wt * half));
+            }
+        }
+        // The sections in parallel, collected in order (the sums below do not depend on the threads).
+        let samples: Vec<(f64, f64, SectionProperties)> = at
+            .par_iter()
+            .map(|&(x, w)| {
                 let p = hull
                     .section_at(x)
                     .expect("node lies between stations")
                     .properties(loading.draft_at(x, lpp));
-                samples.push((x, wt * half, p));
-            }
-        }
+                (x, w, p)
+            })
+            .collect();
         let int = |f: &dyn Fn(f64, &SectionProperties) -> f64| -> f64 {
             samples.iter().map(|(x, w, p)| w * f(*x, p)).sum()
         };

@@ -45,9 +45,11 @@ impl SectionInterpolator {
         }
         let mut pts: Vec<[f64; 2]> = Vec::with_capacity(self.y.len());
         let mut zmax = f64::NEG_INFINITY;
+        // Every interpolant has the stations' x as knots: one search for all of them.
+        let at = self.y[0].locate(x);
         for j in 0..self.y.len() {
-            let yv = self.y[j].eval(x).max(0.0);
-            let zv = self.z[j].eval(x).max(zmax);
+            let yv = self.y[j].eval_at(at).max(0.0);
+            let zv = self.z[j].eval_at(at).max(zmax);
             zmax = zv;
             let p = [if j == 0 { 0.0 } else { yv }, zv];
             if pts.last().is_none_or(|q: &[f64; 2]| {

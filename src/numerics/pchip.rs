@@ -19,6 +19,15 @@ pub struct Pchip {
     d: Vec<f64>,
 }
 
+/// A point located among the knots of an interpolant: interval k, local coordinate s in [0, 1] (outside
+/// for extrapolation) and the interval's length h.
+#[derive(Debug, Clone, Copy)]
+pub struct Located {
+    k: usize,
+    s: f64,
+    h: f64,
+}
+
 impl Pchip {
     /// Build the interpolant. Panics only on programmer error (fewer than one knot, x not strictly
     /// increasing); user data are validated before they get here.
@@ -74,13 +83,38 @@ impl Pchip {
 
     /// Value at `t`. Outside the knots the end cubic is extended (callers decide whether that is allowed).
     pub fn eval(&self, t: f64) -> f64 {
-        let n = self.x.len();
-        if n == 1 {
+        if self.x.len() == 1 {
             return self.y[0];
+        }
+        self.eval_at(self.locate(t))
+    }
+
+    /// Where `t` falls among the knots, for [`Pchip::eval_at`] on this interpolant or any other with the
+    /// same knots (one search serves them all).
+    pub fn locate(&self, t: f64) -> Located {
+        if self.x.len() == 1 {
+            return Located {
+                k: 0,
+                s: 0.0,
+                h: 0.0,
+            };
         }
         let k = self.interval(t);
         let h = self.x[k + 1] - self.x[k];
-        let s = (t - self.x[k]) / h;
+        Located {
+            k,
+            s: (t - self.x[k]) / h,
+            h,
+        }
+    }
+
+    /// Value at a point found by [`Pchip::locate`] on an interpolant with the same knots: the Hermite
+    /// cubic p(s) = h00 y_k + h10 h d_k + h01 y_k+1 + h11 h d_k+1 (Fritsch & Carlson 1980).
+    pub fn eval_at(&self, at: Located) -> f64 {
+        if self.x.len() == 1 {
+            return self.y[0];
+        }
+        let Located { k, s, h } = at;
         let (h00, h10, h01, h11) = hermite_basis(s);
         h00 * self.y[k] + h10 * h * self.d[k] + h01 * self.y[k + 1] + h11 * h * self.d[k + 1]
     }

@@ -13,6 +13,8 @@
 //!
 //! Frequencies outside the table are an error, never extrapolated.
 
+use rayon::prelude::*;
+
 use super::ShipModel;
 use super::section::{BodySample, Radiation};
 use super::strip_theory::{self, SectionSolutions, StripSettings, Strips};
@@ -56,8 +58,9 @@ impl StripTable {
                 }
             })
             .collect();
+        // Frequencies in parallel as well as the strips of each (collected in order: deterministic).
         let grid = omegas
-            .iter()
+            .par_iter()
             .map(|&w| strip_theory::strips(model, w, settings))
             .collect::<Result<Vec<_>>>()?;
         Ok(Self {

@@ -259,6 +259,45 @@ pub struct ChunkLists {
     f: Vec<f64>,
 }
 
+/// The entries of the particle whose list is being built: index and mirror flag known, distance, kernel
+/// factor and fluid flag to be filled in by [`LastEntries::complete`].
+pub struct LastEntries<'a> {
+    tag: &'a mut [u32],
+    r: &'a mut [f64],
+    f: &'a mut [f64],
+}
+
+impl LastEntries<'_> {
+    /// Number of entries.
+    #[inline(always)]
+    pub fn len(&self) -> usize {
+        self.tag.len()
+    }
+
+    /// Whether there are none.
+    #[inline(always)]
+    pub fn is_empty(&self) -> bool {
+        self.tag.is_empty()
+    }
+
+    /// Index of entry k's neighbour and whether it is a mirror image.
+    #[inline(always)]
+    pub fn neighbour(&self, k: usize) -> (usize, bool) {
+        let t = self.tag[k];
+        ((t & INDEX) as usize, t & MIRRORED != 0)
+    }
+
+    /// Fill in entry k: the distance |r_ij|, the kernel gradient factor F(|r_ij|) and whether j is fluid.
+    #[inline(always)]
+    pub fn complete(&mut self, k: usize, r: f64, f: f64, fluid: bool) {
+        self.r[k] = r;
+        self.f[k] = f;
+        if fluid {
+            self.tag[k] |= FLUID;
+        }
+    }
+}
+
 impl ChunkLists {
     /// Start a new build of the lists.
     pub fn clear(&mut self) {
@@ -272,9 +311,6 @@ impl ChunkLists {
     /// Append the neighbours of point (yi, zi) within `support2` (squared support radius), mirror images
     /// included, in the order of [`for_each_neighbour`], leaving out particle `skip` (not its image);
     /// `fluid(j)` says whether j is fluid and `factor(r)` gives F(r).
-    ///
-    /// The candidates of every cell range are filtered without branches straight into the list (each is
-    /// written and kept by advancing the count); the factors are then computed over the kept ones.
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
     pub fn push_neighbours(
@@ -289,8 +325,36 @@ impl ChunkLists {
         fluid: impl Fn(usize) -> bool,
         factor: impl Fn(f64) -> f64,
     ) {
-        let first = self.tag.len();
-        let mut n = first;
+        self.push_candidates(grid, y, z, yi, zi, skip, support2);
+        let mut last = self.last_entries();
+        for k in 0..last.len() {
+            let (j, mirrored) = last.neighbour(k);
+            let dy = if mirrored { yi + y[j] } else { yi - y[j] };
+            let dz = zi - z[j];
+            let r = (dy * dy + dz * dz).sqrt();
+            last.complete(k, r, factor(r), fluid(j));
+        }
+    }
+
+    /// The first half of [`ChunkLists::push_neighbours`]: append the neighbours of (yi, zi) with their
+    /// index and mirror flag only. The caller completes each with [`ChunkLists::last_entries`] (the
+    /// momentum pass does so inside its pair loop, where it has the offsets at hand anyway).
+    ///
+    /// The candidates of every cell range are filtered without branches straight into the list (each is
+    /// written and kept by advancing the count).
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    pub fn push_candidates(
+        &mut self,
+        grid: &Grid,
+        y: &[f64],
+        z: &[f64],
+        yi: f64,
+        zi: f64,
+        skip: usize,
+        support2: f64,
+    ) {
+        let mut n = self.tag.len();
         for r in grid.ranges(yi, zi) {
             self.tag.resize(n + r.len(), 0);
             let (ys, zs, out) = (&y[r.clone()], &z[r.clone()], &mut self.tag[..]);
@@ -314,20 +378,19 @@ impl ChunkLists {
             }
         }
         self.tag.truncate(n);
-        for t in &mut self.tag[first..] {
-            let j = (*t & INDEX) as usize;
-            let dy = if *t & MIRRORED != 0 {
-                yi + y[j]
-            } else {
-                yi - y[j]
-            };
-            let dz = zi - z[j];
-            let r = (dy * dy + dz * dz).sqrt();
-            self.r.push(r);
-            self.f.push(factor(r));
-            if fluid(j) {
-                *t |= FLUID;
-            }
+        self.r.resize(n, 0.0);
+        self.f.resize(n, 0.0);
+    }
+
+    /// The entries of the particle being built (pushed since the last [`ChunkLists::end_particle`]), to
+    /// be completed.
+    #[inline(always)]
+    pub fn last_entries(&mut self) -> LastEntries<'_> {
+        let first = self.start[self.start.len() - 1] as usize;
+        LastEntries {
+            tag: &mut self.tag[first..],
+            r: &mut self.r[first..],
+            f: &mut self.f[first..],
         }
     }
 
@@ -341,24 +404,6 @@ impl ChunkLists {
     #[inline(always)]
     pub fn of(&self, k: usize) -> impl Iterator<Item = ListEntry> + '_ {
         let r = self.start[k] as usize..self.start[k + 1] as usize;
-        self.tag[r.clone()]
-            .iter()
-            .zip(&self.r[r.clone()])
-            .zip(&self.f[r])
-            .map(|((&t, &r), &f)| ListEntry {
-                j: (t & INDEX) as usize,
-                mirrored: t & MIRRORED != 0,
-                fluid: t & FLUID != 0,
-                r,
-                f,
-            })
-    }
-
-    /// The neighbours pushed since the last [`ChunkLists::end_particle`] (the particle being built).
-    #[inline(always)]
-    pub fn of_last(&self) -> impl Iterator<Item = ListEntry> + '_ {
-        let k = self.start.len() - 1;
-        let r = self.start[k] as usize..self.tag.len();
         self.tag[r.clone()]
             .iter()
             .zip(&self.r[r.clone()])

@@ -169,31 +169,27 @@ fn momentum_pass<const RIEMANN: bool, const GRAD: bool, const VISCOUS: bool>(
                     }
                     let (yi, zi, vyi, vzi) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i]);
                     let (rho_i, p_i) = (pt.rho[i], pt.p[i]);
-                    // Search first (filling the list), then sum over the list: the accumulators stay
-                    // in registers instead of living behind the search closure.
-                    list.push_neighbours(
-                        grid,
-                        pt.y,
-                        pt.z,
-                        yi,
-                        zi,
-                        i,
-                        kernel.support2(),
-                        |j| pt.kind[j] == Kind::Fluid,
-                        |r| kernel.grad_factor(r),
-                    );
+                    // Search first (the candidates into the list), then one loop that completes
+                    // each entry (distance, kernel factor, fluid flag, kept for the continuity pass)
+                    // and sums its terms: the accumulators stay in registers, and the neighbour's
+                    // position is loaded once.
+                    list.push_candidates(grid, pt.y, pt.z, yi, zi, i, kernel.support2());
+                    let mut entries = list.last_entries();
                     let (mut ay, mut az, mut vy_acc, mut vz_acc) = (0.0, 0.0, 0.0, 0.0);
                     let mut sums = antuono2010::GradientSums::default();
-                    let mut m = 0u64;
-                    for e in list.of_last() {
-                        m += 1;
-                        let (j, r, f, fluid) = (e.j, e.r, e.f, e.fluid);
+                    let m = entries.len() as u64;
+                    for k in 0..entries.len() {
+                        let (j, mirrored) = entries.neighbour(k);
                         let dz = zi - pt.z[j];
-                        let (dy, vyj) = if e.mirrored {
+                        let (dy, vyj) = if mirrored {
                             (yi + pt.y[j], -pt.vy[j])
                         } else {
                             (yi - pt.y[j], pt.vy[j])
                         };
+                        let r = (dy * dy + dz * dz).sqrt();
+                        let f = kernel.grad_factor(r);
+                        let fluid = pt.kind[j] == Kind::Fluid;
+                        entries.complete(k, r, f, fluid);
                         let rho_j = pt.rho[j];
                         let fw = f * pt.vol[j];
                         let psum = if RIEMANN {

@@ -101,22 +101,30 @@ pub fn write(r: &Report, out: &Path) -> Result<Vec<PathBuf>> {
             }
         }
     }
-    let mut written = Vec::new();
-    for (k, (f, text)) in r.figures.iter().enumerate() {
-        let stem = format!("{:02}-{}", k + 1, f.id);
-        let svg = figs.join(format!("{stem}.svg"));
-        write_text_atomic(&svg, text)?;
-        let csv = figs.join(format!("{stem}.csv"));
-        write_text_atomic(&csv, &f.csv()?)?;
-        written.extend([svg, csv]);
-    }
-    for (name, png) in &r.pngs {
-        let p = figs.join(name);
-        write_atomic(&p, png)?;
-        written.push(p);
-    }
+    // The figure files are written while the PDF is typeset (the typesetting is most of the time).
+    let (figures, pdf_bytes) = rayon::join(
+        || -> Result<Vec<PathBuf>> {
+            let mut written = Vec::new();
+            for (k, (f, text)) in r.figures.iter().enumerate() {
+                let stem = format!("{:02}-{}", k + 1, f.id);
+                let svg = figs.join(format!("{stem}.svg"));
+                write_text_atomic(&svg, text)?;
+                let csv = figs.join(format!("{stem}.csv"));
+                write_text_atomic(&csv, &f.csv()?)?;
+                written.extend([svg, csv]);
+            }
+            for (name, png) in &r.pngs {
+                let p = figs.join(name);
+                write_atomic(&p, png)?;
+                written.push(p);
+            }
+            Ok(written)
+        },
+        || r.doc.pdf(),
+    );
+    let mut written = figures?;
     let pdf = out.join("report.pdf");
-    write_atomic(&pdf, &r.doc.pdf()?)?;
+    write_atomic(&pdf, &pdf_bytes?)?;
     written.push(pdf);
     Ok(written)
 }
