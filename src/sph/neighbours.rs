@@ -309,35 +309,8 @@ impl ChunkLists {
     }
 
     /// Append the neighbours of point (yi, zi) within `support2` (squared support radius), mirror images
-    /// included, in the order of [`for_each_neighbour`], leaving out particle `skip` (not its image);
-    /// `fluid(j)` says whether j is fluid and `factor(r)` gives F(r).
-    #[allow(clippy::too_many_arguments)]
-    #[inline(always)]
-    pub fn push_neighbours(
-        &mut self,
-        grid: &Grid,
-        y: &[f64],
-        z: &[f64],
-        yi: f64,
-        zi: f64,
-        skip: usize,
-        support2: f64,
-        fluid: impl Fn(usize) -> bool,
-        factor: impl Fn(f64) -> f64,
-    ) {
-        self.push_candidates(grid, y, z, yi, zi, skip, support2);
-        let mut last = self.last_entries();
-        for k in 0..last.len() {
-            let (j, mirrored) = last.neighbour(k);
-            let dy = if mirrored { yi + y[j] } else { yi - y[j] };
-            let dz = zi - z[j];
-            let r = (dy * dy + dz * dz).sqrt();
-            last.complete(k, r, factor(r), fluid(j));
-        }
-    }
-
-    /// The first half of [`ChunkLists::push_neighbours`]: append the neighbours of (yi, zi) with their
-    /// index and mirror flag only. The caller completes each with [`ChunkLists::last_entries`] (the
+    /// included, in the order of [`for_each_neighbour`], leaving out particle `skip` (not its image), with
+    /// their index and mirror flag only. The caller completes each with [`ChunkLists::last_entries`] (the
     /// momentum pass does so inside its pair loop, where it has the offsets at hand anyway).
     ///
     /// The candidates of every cell range are filtered without branches straight into the list (each is
@@ -490,17 +463,18 @@ mod tests {
                 support * support,
                 |j, _, _, r2, m| want.push((j, m, j % 3 == 0, r2.sqrt())),
             );
-            list.push_neighbours(
-                &g,
-                &ys,
-                &zs,
-                ys[i],
-                zs[i],
-                i,
-                support * support,
-                |j| j % 3 == 0,
-                |r| r,
-            );
+            list.push_candidates(&g, &ys, &zs, ys[i], zs[i], i, support * support);
+            let mut last = list.last_entries();
+            for k in 0..last.len() {
+                let (j, mirrored) = last.neighbour(k);
+                let dy = if mirrored {
+                    ys[i] + ys[j]
+                } else {
+                    ys[i] - ys[j]
+                };
+                let r = (dy * dy + (zs[i] - zs[j]).powi(2)).sqrt();
+                last.complete(k, r, r, j % 3 == 0);
+            }
             list.end_particle();
             let got: Vec<_> = list
                 .of(i)
