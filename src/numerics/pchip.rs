@@ -83,9 +83,6 @@ impl Pchip {
 
     /// Value at `t`. Outside the knots the end cubic is extended (callers decide whether that is allowed).
     pub fn eval(&self, t: f64) -> f64 {
-        if self.x.len() == 1 {
-            return self.y[0];
-        }
         self.eval_at(self.locate(t))
     }
 

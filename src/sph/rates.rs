@@ -186,7 +186,8 @@ fn momentum_pass<const RIEMANN: bool, const GRAD: bool, const VISCOUS: bool>(
                         } else {
                             (yi - pt.y[j], pt.vy[j])
                         };
-                        let r = (dy * dy + dz * dz).sqrt();
+                        let r2 = dy * dy + dz * dz;
+                        let r = r2.sqrt();
                         let f = kernel.grad_factor(r);
                         let fluid = pt.kind[j] == Kind::Fluid;
                         entries.complete(k, r, f, fluid);
@@ -205,7 +206,6 @@ fn momentum_pass<const RIEMANN: bool, const GRAD: bool, const VISCOUS: bool>(
                             sums.add(fw, dy, dz, rho_j - rho_i);
                         }
                         if VISCOUS && fluid {
-                            let r2 = dy * dy + dz * dz;
                             let vdotd = (vyi - vyj) * dy + (vzi - pt.vz[j]) * dz;
                             let pi = vdotd / (r2 + eps2) * fw;
                             vy_acc += pi * dy;
