@@ -80,3 +80,98 @@ pub fn sweep(out: &Path) {
         }
     }
 }
+
+/// The finished entries of the cache of `out` whose key is not in `used`, as (folder, size in bytes).
+pub fn unused(out: &Path, used: &std::collections::BTreeSet<String>) -> Vec<(PathBuf, u64)> {
+    let Ok(dir) = std::fs::read_dir(out.join("cache")) else {
+        return Vec::new();
+    };
+    let mut found: Vec<(PathBuf, u64)> = dir
+        .flatten()
+        .filter(|e| e.path().is_dir())
+        .filter(|e| {
+            let name = e.file_name().to_string_lossy().into_owned();
+            !name.starts_with('.') && !used.contains(&name)
+        })
+        .map(|e| (e.path(), size_of(&e.path())))
+        .collect();
+    found.sort();
+    found
+}
+
+/// Bytes in the files under `dir`.
+fn size_of(dir: &Path) -> u64 {
+    std::fs::read_dir(dir).map_or(0, |d| {
+        d.flatten()
+            .map(|e| match e.file_type() {
+                Ok(t) if t.is_dir() => size_of(&e.path()),
+                _ => e.metadata().map_or(0, |m| m.len()),
+            })
+            .sum()
+    })
+}
+
+/// What to do with the entries the assessment did not use: remove them (`prune`), or describe them. Returns
+/// the note for the user, if there is anything to say.
+pub fn tidy(
+    out: &Path,
+    used: &std::collections::BTreeSet<String>,
+    prune: bool,
+) -> Result<Option<String>> {
+    let unused = unused(out, used);
+    if unused.is_empty() {
+        return Ok(None);
+    }
+    let bytes: u64 = unused.iter().map(|u| u.1).sum();
+    let size = format!("{:.1} MB", bytes as f64 / 1e6);
+    if prune {
+        for (dir, _) in &unused {
+            std::fs::remove_dir_all(dir).map_err(|e| Error::io(dir, e))?;
+        }
+        return Ok(Some(format!(
+            "removed {} this assessment did not use ({size})",
+            entries(unused.len())
+        )));
+    }
+    Ok(Some(format!(
+        "{} ({size}) in {} {} not used by this assessment (other stations, speeds, numerics or tool \
+         versions); --prune-cache removes them",
+        entries(unused.len()),
+        out.join("cache").display(),
+        if unused.len() == 1 { "was" } else { "were" }
+    )))
+}
+
+/// "1 cache entry", "2 cache entries".
+fn entries(n: usize) -> String {
+    if n == 1 {
+        "1 cache entry".to_string()
+    } else {
+        format!("{n} cache entries")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn entries_the_assessment_did_not_use_are_counted_and_pruned_only_when_asked() {
+        let out = std::env::temp_dir().join(format!("slamtool-cache-tidy-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&out);
+        for k in ["aaa", "bbb", ".tmp-ccc-1"] {
+            std::fs::create_dir_all(out.join("cache").join(k)).unwrap();
+            std::fs::write(out.join("cache").join(k).join(RECORD), "0123456789").unwrap();
+        }
+        let used: std::collections::BTreeSet<String> = ["aaa".to_string()].into();
+        let note = tidy(&out, &used, false).unwrap().unwrap();
+        assert!(note.starts_with("1 cache entry (0.0 MB)"), "{note}");
+        assert!(out.join("cache/bbb").exists());
+        let note = tidy(&out, &used, true).unwrap().unwrap();
+        assert!(note.starts_with("removed 1 cache entry"), "{note}");
+        assert!(!out.join("cache/bbb").exists());
+        assert!(out.join("cache/aaa").exists());
+        assert_eq!(tidy(&out, &used, true).unwrap(), None);
+        std::fs::remove_dir_all(&out).unwrap();
+    }
+}

@@ -323,6 +323,10 @@ pub fn run(
             sph::cost::human_time(bound)
         )));
     }
+    let used: std::collections::BTreeSet<String> = jobs
+        .iter()
+        .filter_map(|j| j.setup.as_ref().ok().map(|(_, k)| k.clone()))
+        .collect();
     let done = AtomicUsize::new(0);
     if !jobs.is_empty() {
         progress.start("assessment runs", jobs.len() as f64, "runs");
@@ -352,6 +356,9 @@ pub fn run(
     };
     if !ran.is_empty() {
         progress.finish();
+    }
+    if let Some(note) = cache::tidy(out, &used, s.prune_cache)? {
+        progress.note(&note);
     }
     let mut sph_of: Vec<Option<Result<SphRecord>>> = plan.events.iter().map(|_| None).collect();
     for (i, r) in ran {

@@ -84,6 +84,10 @@ pub struct AssessArgs {
     /// the cached ones).
     #[arg(long)]
     no_cache: bool,
+    /// Remove the runs in OUT/cache that this assessment did not use (other stations, speeds, numerics or
+    /// tool versions). Without it they are kept, and a note gives their number and size.
+    #[arg(long)]
+    prune_cache: bool,
     /// Write into an output folder that holds files of something other than an assessment, and run an
     /// assessment whose SPH runs are estimated to take more than an hour.
     #[arg(long)]
@@ -196,6 +200,7 @@ pub fn run(a: AssessArgs) -> Result<()> {
             ..StudyPlan::default()
         },
         use_cache: !a.no_cache,
+        prune_cache: a.prune_cache,
         warnings: station_warnings,
         limits,
         design_basis: a

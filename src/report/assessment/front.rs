@@ -162,16 +162,59 @@ fn events_text(evs: &[Ev]) -> String {
         .join("; ")
 }
 
+/// The messages of one group (same [`shape`]) as one message: a number that is the same in all of
+/// them is kept, and one that differs becomes the range "lowest to highest" over the group, each end
+/// written as in its own message.
+fn merged(msgs: &[String]) -> String {
+    let split: Vec<Vec<&str>> = msgs
+        .iter()
+        .map(|m| m.split_whitespace().collect())
+        .collect();
+    let first = &split[0];
+    let trim = |w: &str| -> (usize, usize) {
+        let start = w.len() - w.trim_start_matches(|c: char| ",;:()[]%".contains(c)).len();
+        let end = w.trim_end_matches(|c: char| ",;:()[]%".contains(c)).len();
+        (start, end.max(start))
+    };
+    let words = first.iter().enumerate().map(|(i, w)| {
+        let (a, b) = trim(w);
+        let core = &w[a..b];
+        let Ok(_) = core.parse::<f64>() else {
+            return w.to_string();
+        };
+        // (value, text) of this number in every message of the group
+        let mut values: Vec<(f64, &str)> = split
+            .iter()
+            .filter_map(|m| {
+                let w = m.get(i)?;
+                let (a, b) = trim(w);
+                Some((w[a..b].parse::<f64>().ok()?, &w[a..b]))
+            })
+            .collect();
+        values.sort_by(|x, y| x.0.total_cmp(&y.0));
+        match (values.first(), values.last()) {
+            (Some(lo), Some(hi)) if lo.1 != hi.1 => {
+                format!("{}{} to {}{}", &w[..a], lo.1, hi.1, &w[b..])
+            }
+            _ => w.to_string(),
+        }
+    });
+    words.collect::<Vec<_>>().join(" ")
+}
+
 /// Every warning of the assessment, grouped by kind; a warning repeated over events (up to its numbers)
-/// is given once, with the events it concerns.
+/// is given once, with the events it concerns and the range of each number that differs among them.
 pub fn warnings(saved: &Saved) -> Vec<(String, Vec<String>)> {
-    // (message, events it was raised for)
-    let mut grouped: Vec<(String, String, Vec<Ev>)> = Vec::new();
+    // (shape, messages, events they were raised for)
+    let mut grouped: Vec<(String, Vec<String>, Vec<Ev>)> = Vec::new();
     let mut add = |msg: String, event: Option<Ev>| {
         let key = shape(&msg);
         match grouped.iter_mut().find(|(k, _, _)| *k == key) {
-            Some((_, _, evs)) => evs.extend(event),
-            None => grouped.push((key, msg, event.into_iter().collect())),
+            Some((_, msgs, evs)) => {
+                msgs.push(msg);
+                evs.extend(event);
+            }
+            None => grouped.push((key, vec![msg], event.into_iter().collect())),
         }
     };
     for w in list(&saved.summary, "warnings")
@@ -212,13 +255,16 @@ pub fn warnings(saved: &Saved) -> Vec<(String, Vec<String>)> {
     }
     let mut all: Vec<String> = grouped
         .into_iter()
-        .map(|(_, msg, evs)| match evs.len() {
-            0 => msg,
-            1 => format!("{}: {msg}", events_text(&evs)),
-            n => format!(
-                "{msg} [{n} events: {}; the numbers quoted are those of the first]",
-                events_text(&evs)
-            ),
+        .map(|(_, msgs, evs)| {
+            let msg = merged(&msgs);
+            match evs.len() {
+                0 => msg,
+                1 => format!("{}: {msg}", events_text(&evs)),
+                n => format!(
+                    "{msg} [{n} events: {}; a number that differs among them is given as its range]",
+                    events_text(&evs)
+                ),
+            }
         })
         .collect();
     let mut seen = std::collections::BTreeSet::new();
@@ -514,5 +560,24 @@ mod tests {
         assert_eq!(a, b);
         assert_ne!(b, c);
         assert_eq!(shape("at t = 0.19 s;"), "at t = # s;");
+    }
+
+    #[test]
+    fn a_group_of_warnings_gives_each_differing_number_as_its_range() {
+        let msgs = [
+            "sensor S1 dry: y = 0.29 m before t = 0.2894 s; dp 7.3 mm".to_string(),
+            "sensor S1 dry: y = 0.31 m before t = 0.1702 s; dp 7.3 mm".to_string(),
+            "sensor S1 dry: y = 0.30 m before t = 0.25 s; dp 7.3 mm".to_string(),
+        ];
+        assert_eq!(
+            merged(&msgs),
+            "sensor S1 dry: y = 0.29 to 0.31 m before t = 0.1702 to 0.2894 s; dp 7.3 mm"
+        );
+        assert_eq!(merged(&msgs[..1]), msgs[0]);
+        let signed = [
+            "change (+28.8 %)".to_string(),
+            "change (-21.9 %)".to_string(),
+        ];
+        assert_eq!(merged(&signed), "change (-21.9 to +28.8 %)");
     }
 }
