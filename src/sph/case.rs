@@ -6,13 +6,14 @@
 //! Automatic choices:
 //! * particle spacing dp = b / N, b the largest half-breadth of the section, N = 40 / 80 / 160 for the
 //!   coarse / medium / fine levels (or `particles_per_half_beam`);
-//! * sound speed c0 = max(V sqrt(Cp / 0.02), 10 sqrt(g D)): density variation below about 1 % at the
-//!   expected peak pressure coefficient Cp = (pi^2/4) cot^2(beta) (Wagner 1932, beta the smallest local
-//!   deadrise below the chine, not below 10 deg) and at the tank bottom (depth D);
-//! * tank half-width max(4 b, c0 t_end / 2) and depth max(3 b, c0 t_end / 2) (no acoustic echo from the
-//!   walls reaches the body during the run), side walls 0.25 D above the water;
-//! * end time: the keel reaches the depth of the chine (the point of largest half-breadth) below the calm
-//!   water surface, capped at 0.9 of the section height.
+//! * sound speed c0 = max(V sqrt(Cp / 0.02), 10 V, 10 sqrt(g D)): density variation below about 1 % at
+//!   the expected peak pressure coefficient Cp = (pi^2/4) cot^2(beta) (Wagner 1932, beta the smallest
+//!   local deadrise below the chine, not below 10 deg) and at the tank bottom (depth D), and a Mach number
+//!   V / c0 of at most 0.1 ([`crate::sph::automatic::sound_speed`]);
+//! * tank: a few half-breadths of clear water beside and under the body, plus an absorbing layer along
+//!   the walls and the bottom ([`crate::sph::automatic::tank`]);
+//! * end time: when the impact is over, from Wagner's wetting and the entry velocity
+//!   ([`crate::sph::automatic`]).
 //!
 //! Numerics (`[numerics]` in a case file): `riemann` (default true: the low-dissipation Riemann pair terms
 //! of [`crate::sph::riemann`]; false: delta-SPH with artificial viscosity), `shifting` (default false:
