@@ -13,11 +13,7 @@ pub const END_MARGIN: f64 = 1.2;
 
 /// Water depth under the keel's deepest position and clear width beside the widest point, in
 /// half-breadths b, of the undamped part of an automatic tank; and the thickness of its absorbing layer.
-/// Measured against echo-free tanks at 20 particles per half-breadth and c0 = 30 V (largest section-force
-/// difference over the run, as a fraction of the peak; Zhao 1996 case / 30 deg wedge at 2 m/s): 3 b of
-/// depth 2.99 % / 2.78 %, 3.5 b 2.24 % / -, 4 b 1.77 % / 1.38 %; 6 b of width instead of 5 b moved the
-/// wedge's by 0.1 % only. The differences come at the end of the run, when the displaced water is largest.
-pub const CLEAR_DEPTH_B: f64 = 4.0;
+pub const CLEAR_DEPTH_B: f64 = 3.0;
 pub const CLEAR_WIDTH_B: f64 = 5.0;
 pub const DAMPING_B: f64 = 1.5;
 
@@ -32,16 +28,6 @@ pub const MAX_C0: f64 = 1480.0;
 
 /// The density variation delta allowed at the expected peak pressure, rho0 c0^2 delta = Cp rho0 V^2 / 2.
 pub const DENSITY_VARIATION: f64 = 0.01;
-
-/// Largest Mach number V / c0 of the entry speed that the automatic sound speed gives. The classic
-/// weak-compressibility bound is 0.1 on the largest flow speed (Monaghan 1994; Veen 2010 s. 3.2.4; Veen ran
-/// the Ochi V-form sections at c0 = 100 m/s, 36-83 V, s. 6.3.3). Measured on the Ochi 0.093 Lpp station
-/// (44 deg deadrise at the keel) at 2.2 m/s constant speed and the default resolution, the sensor peaks
-/// grow with c0 until V / c0 is about 0.037 and then stay within 2-4 % (S093-2: 10.75, 11.29, 11.81,
-/// 12.26, 12.45, 12.53, 12.32 kPa at c0 = 38.9, 45, 52, 60, 66, 75, 90 m/s); halving the time step at
-/// c0 = 38.9 m/s instead moved it by 1 %, so the shortfall is compressibility, not time stepping. 1/30
-/// keeps automatic runs on the converged side of that measurement.
-pub const AUTOMATIC_MACH: f64 = 1.0 / 30.0;
 
 /// A chosen value and how it was chosen.
 #[derive(Debug, Clone)]
@@ -263,8 +249,8 @@ pub fn tank(section: &Section, keel_depth_end: f64) -> (f64, f64, f64, String) {
 
 /// Sound speed: the largest of V sqrt(Cp / (2 delta)) (density variation delta = 1 % at Wagner's peak pressure
 /// coefficient Cp = (pi^2/4) cot^2(beta), beta the smallest deadrise below the widest point, not below
-/// 10 deg), V / [`AUTOMATIC_MACH`] = 30 V and 10 sqrt(g D) (hydrostatic pressure at the tank bottom within
-/// 1 % of rho0 c0^2). The tank depth D is the one the run uses.
+/// 10 deg), 10 V (Mach number at most 0.1) and 10 sqrt(g D) (hydrostatic pressure at the tank bottom
+/// within 1 % of rho0 c0^2). The tank depth D is the one the run uses.
 pub fn sound_speed(section: &Section, v_max: f64, g: f64, tank_depth: f64) -> Choice {
     let b = section.half_breadth();
     let z_chine = section
@@ -276,13 +262,13 @@ pub fn sound_speed(section: &Section, v_max: f64, g: f64, tank_depth: f64) -> Ch
     // 0 for a section whose contour below the chine is all vertical: the other bounds then set c0.
     let cp = crate::analytic::wagner::peak_pressure_coefficient(beta).unwrap_or(0.0);
     let c_imp = v_max * (cp / (2.0 * DENSITY_VARIATION)).sqrt();
-    let c_mach = v_max / AUTOMATIC_MACH;
+    let c_mach = 10.0 * v_max;
     let c_hyd = 10.0 * (g * tank_depth).sqrt();
     let value = c_imp.max(c_mach).max(c_hyd);
     Choice {
         value,
         note: format!(
-            "c0 = max(V sqrt(Cp / (2 x {DENSITY_VARIATION})), 30 V, 10 sqrt(g D)) = max({c_imp:.2}, {c_mach:.2}, {c_hyd:.2}) \
+            "c0 = max(V sqrt(Cp / (2 x {DENSITY_VARIATION})), 10 V, 10 sqrt(g D)) = max({c_imp:.2}, {c_mach:.2}, {c_hyd:.2}) \
              = {value:.2} m/s (V = {v_max:.3} m/s, Cp Wagner {cp:.3} at deadrise {:.1} deg, D = {tank_depth:.3} m, \
              the depth of the tank the run uses)",
             beta.to_degrees()

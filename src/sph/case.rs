@@ -6,10 +6,10 @@
 //! Automatic choices:
 //! * particle spacing dp = b / N, b the largest half-breadth of the section, N = 40 / 80 / 160 for the
 //!   coarse / medium / fine levels (or `particles_per_half_beam`);
-//! * sound speed c0 = max(V sqrt(Cp / 0.02), 30 V, 10 sqrt(g D)): density variation below about 1 % at
+//! * sound speed c0 = max(V sqrt(Cp / 0.02), 10 V, 10 sqrt(g D)): density variation below about 1 % at
 //!   the expected peak pressure coefficient Cp = (pi^2/4) cot^2(beta) (Wagner 1932, beta the smallest
 //!   local deadrise below the chine, not below 10 deg) and at the tank bottom (depth D), and a Mach number
-//!   V / c0 of at most 1/30 ([`crate::sph::automatic::AUTOMATIC_MACH`]);
+//!   V / c0 of at most 0.1 ([`crate::sph::automatic::sound_speed`]);
 //! * tank: a few half-breadths of clear water beside and under the body, plus an absorbing layer along
 //!   the walls and the bottom ([`crate::sph::automatic::tank`]);
 //! * end time: when the impact is over, from Wagner's wetting and the entry velocity
@@ -436,7 +436,7 @@ pub fn check(s: &Setup) -> Result<()> {
             return Err(Error::Invalid(format!(
                 "sound speed c0 = {} m/s is not well above the body speed {v} m/s (Mach number {:.3}, at most \
                  {MAX_MACH}): weakly compressible SPH needs c0 at least 10 times the flow speed (the automatic \
-                 choice gives at least 30 times the entry speed)",
+                 choice gives about 20 times the entry speed at 30 deg deadrise)",
                 s.c0,
                 v / s.c0
             )));
