@@ -81,6 +81,18 @@ pub fn sweep(out: &Path) {
     }
 }
 
+/// What an assessment does with the cache entries it did not use.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Unused {
+    /// Count them in a note (the command line without `--prune-cache`).
+    Report,
+    /// Remove them (`--prune-cache`).
+    Prune,
+    /// Leave them unlooked at: a sweep's variants share one cache and run silently, so each variant
+    /// would walk the others' entries for a note nobody sees.
+    Ignore,
+}
+
 /// The finished entries of the cache of `out` whose key is not in `used`, as (folder, size in bytes).
 pub fn unused(out: &Path, used: &std::collections::BTreeSet<String>) -> Vec<(PathBuf, u64)> {
     let Ok(dir) = std::fs::read_dir(out.join("cache")) else {
@@ -111,20 +123,23 @@ fn size_of(dir: &Path) -> u64 {
     })
 }
 
-/// What to do with the entries the assessment did not use: remove them (`prune`), or describe them. Returns
-/// the note for the user, if there is anything to say.
+/// Deal with the entries the assessment did not use as `mode` says. Returns the note for the user, if there
+/// is anything to say.
 pub fn tidy(
     out: &Path,
     used: &std::collections::BTreeSet<String>,
-    prune: bool,
+    mode: Unused,
 ) -> Result<Option<String>> {
+    if mode == Unused::Ignore {
+        return Ok(None);
+    }
     let unused = unused(out, used);
     if unused.is_empty() {
         return Ok(None);
     }
     let bytes: u64 = unused.iter().map(|u| u.1).sum();
     let size = format!("{:.1} MB", bytes as f64 / 1e6);
-    if prune {
+    if mode == Unused::Prune {
         for (dir, _) in &unused {
             std::fs::remove_dir_all(dir).map_err(|e| Error::io(dir, e))?;
         }
@@ -164,14 +179,17 @@ mod tests {
             std::fs::write(out.join("cache").join(k).join(RECORD), "0123456789").unwrap();
         }
         let used: std::collections::BTreeSet<String> = ["aaa".to_string()].into();
-        let note = tidy(&out, &used, false).unwrap().unwrap();
+        let note = tidy(&out, &used, Unused::Report).unwrap().unwrap();
         assert!(note.starts_with("1 cache entry (0.0 MB)"), "{note}");
         assert!(out.join("cache/bbb").exists());
-        let note = tidy(&out, &used, true).unwrap().unwrap();
+        let note = tidy(&out, &used, Unused::Prune).unwrap().unwrap();
         assert!(note.starts_with("removed 1 cache entry"), "{note}");
         assert!(!out.join("cache/bbb").exists());
         assert!(out.join("cache/aaa").exists());
-        assert_eq!(tidy(&out, &used, true).unwrap(), None);
+        assert_eq!(tidy(&out, &used, Unused::Prune).unwrap(), None);
+        std::fs::create_dir_all(out.join("cache/ddd")).unwrap();
+        assert_eq!(tidy(&out, &used, Unused::Ignore).unwrap(), None);
+        assert!(out.join("cache/ddd").exists());
         std::fs::remove_dir_all(&out).unwrap();
     }
 }

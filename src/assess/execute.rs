@@ -357,7 +357,7 @@ pub fn run(
     if !ran.is_empty() {
         progress.finish();
     }
-    if let Some(note) = cache::tidy(out, &used, s.prune_cache)? {
+    if let Some(note) = cache::tidy(out, &used, s.unused_cache)? {
         progress.note(&note);
     }
     let mut sph_of: Vec<Option<Result<SphRecord>>> = plan.events.iter().map(|_| None).collect();

@@ -57,9 +57,9 @@ pub struct Settings {
     pub strips: usize,
     /// Read finished runs from the cache (they are always written to it).
     pub use_cache: bool,
-    /// Remove the cache entries this assessment did not use (runs of other stations, speeds, numerics or
-    /// tool versions); without it they are kept and counted in a note.
-    pub prune_cache: bool,
+    /// What to do with the cache entries this assessment did not use (runs of other stations, speeds,
+    /// numerics or tool versions): count them in a note, remove them, or leave them unlooked at.
+    pub unused_cache: super::cache::Unused,
     /// Parallel SPH runs (None: rayon's default, one per core).
     pub threads: Option<usize>,
     /// Refuse, before any SPH run starts, an assessment whose estimated wall time for the runs not yet in
@@ -85,7 +85,7 @@ impl Default for Settings {
             study: StudyPlan::default(),
             strips: 31,
             use_cache: true,
-            prune_cache: false,
+            unused_cache: super::cache::Unused::Report,
             threads: None,
             max_wall_s: None,
             limits: Vec::new(),

@@ -200,7 +200,11 @@ pub fn run(a: AssessArgs) -> Result<()> {
             ..StudyPlan::default()
         },
         use_cache: !a.no_cache,
-        prune_cache: a.prune_cache,
+        unused_cache: if a.prune_cache {
+            assess::cache::Unused::Prune
+        } else {
+            assess::cache::Unused::Report
+        },
         warnings: station_warnings,
         limits,
         design_basis: a

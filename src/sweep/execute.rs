@@ -213,6 +213,8 @@ fn assess_case(p: &Prepared, i: usize, out: &Path, threads: Option<usize>) -> Re
         },
         strips: p.common.strips,
         use_cache: true,
+        // The variants share one cache: each would otherwise walk the others' entries for a silent note.
+        unused_cache: assess::cache::Unused::Ignore,
         threads,
         ..assess::Settings::default()
     };

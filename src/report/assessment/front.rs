@@ -127,16 +127,19 @@ pub fn verdict(e: &Value, sensor: &str) -> String {
 /// ("S093-3") are kept.
 fn shape(msg: &str) -> String {
     msg.split_whitespace()
-        .map(|w| {
-            let core = w.trim_matches(|c: char| ",;:()[]%".contains(c));
-            if !core.is_empty() && core.parse::<f64>().is_ok() {
-                "#"
-            } else {
-                w
-            }
-        })
+        .map(|w| if number_in(w).is_some() { "#" } else { w })
         .collect::<Vec<_>>()
         .join(" ")
+}
+
+/// The byte span of the number a word is, inside the punctuation around it ("(+28.8" -> "+28.8", "s;" ->
+/// none), with its value.
+fn number_in(w: &str) -> Option<(usize, usize, f64)> {
+    let punct = |c: char| ",;:()[]%".contains(c);
+    let start = w.len() - w.trim_start_matches(punct).len();
+    let end = w.trim_end_matches(punct).len().max(start);
+    let value = w[start..end].parse::<f64>().ok()?;
+    Some((start, end, value))
 }
 
 /// An event as (station, wave, speed).
@@ -170,16 +173,8 @@ fn merged(msgs: &[String]) -> String {
         .iter()
         .map(|m| m.split_whitespace().collect())
         .collect();
-    let first = &split[0];
-    let trim = |w: &str| -> (usize, usize) {
-        let start = w.len() - w.trim_start_matches(|c: char| ",;:()[]%".contains(c)).len();
-        let end = w.trim_end_matches(|c: char| ",;:()[]%".contains(c)).len();
-        (start, end.max(start))
-    };
-    let words = first.iter().enumerate().map(|(i, w)| {
-        let (a, b) = trim(w);
-        let core = &w[a..b];
-        let Ok(_) = core.parse::<f64>() else {
+    let words = split[0].iter().enumerate().map(|(i, w)| {
+        let Some((a, b, _)) = number_in(w) else {
             return w.to_string();
         };
         // (value, text) of this number in every message of the group
@@ -187,8 +182,8 @@ fn merged(msgs: &[String]) -> String {
             .iter()
             .filter_map(|m| {
                 let w = m.get(i)?;
-                let (a, b) = trim(w);
-                Some((w[a..b].parse::<f64>().ok()?, &w[a..b]))
+                let (a, b, v) = number_in(w)?;
+                Some((v, &w[a..b]))
             })
             .collect();
         values.sort_by(|x, y| x.0.total_cmp(&y.0));
