@@ -165,7 +165,18 @@ fn events_text(evs: &[Ev]) -> String {
         .join("; ")
 }
 
-/// The messages of one group (same [`shape`]) as one message: a number that is the same in all of
+/// The key under which a warning is grouped: its [`shape`] when it was raised for an event (the events
+/// are listed with the group, so a range of numbers stays attributable), the message itself otherwise (a
+/// warning of the whole assessment, e.g. one per flat station, would lose which station it names).
+fn group_key(msg: &str, for_event: bool) -> String {
+    if for_event {
+        shape(msg)
+    } else {
+        msg.to_string()
+    }
+}
+
+/// The messages of one group (same [`group_key`]) as one message: a number that is the same in all of
 /// them is kept, and one that differs becomes the range "lowest to highest" over the group, each end
 /// written as in its own message.
 fn merged(msgs: &[String]) -> String {
@@ -203,7 +214,7 @@ pub fn warnings(saved: &Saved) -> Vec<(String, Vec<String>)> {
     // (shape, messages, events they were raised for)
     let mut grouped: Vec<(String, Vec<String>, Vec<Ev>)> = Vec::new();
     let mut add = |msg: String, event: Option<Ev>| {
-        let key = shape(&msg);
+        let key = group_key(&msg, event.is_some());
         match grouped.iter_mut().find(|(k, _, _)| *k == key) {
             Some((_, msgs, evs)) => {
                 msgs.push(msg);
@@ -555,6 +566,14 @@ mod tests {
         assert_eq!(a, b);
         assert_ne!(b, c);
         assert_eq!(shape("at t = 0.19 s;"), "at t = # s;");
+    }
+
+    #[test]
+    fn warnings_of_the_whole_assessment_are_not_grouped_by_shape() {
+        let a = "station 0.174 Lpp has a flat keel (half-width 0.1313 m)";
+        let b = "station 0.227 Lpp has a flat keel (half-width 0.2082 m)";
+        assert_ne!(group_key(a, false), group_key(b, false));
+        assert_eq!(group_key(a, true), group_key(b, true));
     }
 
     #[test]
