@@ -65,6 +65,7 @@ fn still_tank(dp: f64) -> Setup {
         mirror: true,
         t_end: 3.0,
         initial_immersion: 0.0,
+        refinement: None,
         sensors: Vec::new(),
         snapshot_interval: None,
         filter_cutoff_hz: None,

@@ -67,6 +67,10 @@ pub struct AssessArgs {
     /// Particles across the largest half-breadth (overrides --resolution; for quick checks).
     #[arg(long, value_name = "N")]
     particles_per_half_beam: Option<f64>,
+    /// Refined tanks: the particle spacing in a band around the body (1.5 half-breadths beside it and
+    /// under the keel's deepest position), twice the spacing beyond, for about a third of the particles.
+    #[arg(long)]
+    refined_tank: bool,
     /// Resolutions per SPH run including the reported one (1 = no convergence statement, 2 or 3).
     #[arg(long, default_value_t = 2, value_parser = clap::value_parser!(u8).range(1..=3))]
     convergence_levels: u8,
@@ -193,6 +197,7 @@ pub fn run(a: AssessArgs) -> Result<()> {
         overrides: Overrides {
             level: Some(a.resolution),
             particles_per_half_beam: a.particles_per_half_beam,
+            refinement: a.refined_tank.then_some(true),
             ..Default::default()
         },
         study: StudyPlan {

@@ -84,6 +84,10 @@ pub struct Numerics {
     /// Whole tank instead of a half tank with a symmetry plane.
     #[arg(long)]
     full_domain: bool,
+    /// Refined tank: the particle spacing in a band around the body (1.5 half-breadths beside it and
+    /// under the keel's deepest position), twice the spacing beyond, for about a third of the particles.
+    #[arg(long)]
+    refined_tank: bool,
 }
 
 /// Options shared by every entry run.
@@ -156,6 +160,7 @@ fn overrides(n: &Numerics, c: &Common) -> Overrides {
         c0: n.c0,
         t_end: n.t_end,
         mirror: n.full_domain.then_some(false),
+        refinement: n.refined_tank.then_some(true),
         filter_cutoff_hz: c.filter_hz,
         sensor_method: c.sensor_method,
         ..Default::default()
@@ -176,6 +181,7 @@ fn settings(n: Option<&Numerics>, c: &Common) -> serde_json::Value {
         v["c0_m_per_s"] = serde_json::json!(n.c0);
         v["t_end_s"] = serde_json::json!(n.t_end);
         v["full_domain"] = serde_json::json!(n.full_domain);
+        v["refined_tank"] = serde_json::json!(n.refined_tank);
     }
     v
 }

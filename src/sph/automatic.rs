@@ -247,6 +247,31 @@ pub fn tank(section: &Section, keel_depth_end: f64) -> (f64, f64, f64, String) {
     (half_width, depth, layer, note)
 }
 
+/// Water at the base resolution beside the widest point and under the keel's deepest position in a
+/// refined tank ([`crate::sph::refinement`]), in half-breadths b.
+pub const REFINED_CLEAR_B: f64 = 1.5;
+
+/// The band of base resolution of a refined tank: [`REFINED_CLEAR_B`] b beside the widest point and
+/// under the keel's deepest position, on the 2 dp lattice of the far field. Returns the band and a note.
+pub fn refinement_band(
+    section: &Section,
+    keel_depth_end: f64,
+    dp: f64,
+) -> (crate::sph::refinement::Band, String) {
+    use crate::sph::refinement::{Band, to_coarse_lattice};
+    let b = section.half_breadth();
+    let clear = REFINED_CLEAR_B;
+    let band = Band {
+        half_width: to_coarse_lattice(b + clear * b, dp),
+        depth: to_coarse_lattice(keel_depth_end + clear * b, dp),
+    };
+    let note = format!(
+        "refined tank: particles at dp within {:.3} m of the centre plane and {:.3} m of the surface          ({REFINED_CLEAR_B} b beside the widest point and under the keel's deepest position), at 2 dp beyond          (variable-mass SPH with the mean smoothing length of each pair; the tank rounded to whole 2 dp)",
+        band.half_width, band.depth
+    );
+    (band, note)
+}
+
 /// Sound speed: the largest of V sqrt(Cp / (2 delta)) (density variation delta = 1 % at Wagner's peak pressure
 /// coefficient Cp = (pi^2/4) cot^2(beta), beta the smallest deadrise below the widest point, not below
 /// 10 deg), 10 V (Mach number at most 0.1) and 10 sqrt(g D) (hydrostatic pressure at the tank bottom

@@ -29,6 +29,7 @@ use crate::error::{Error, Result};
 use crate::sph::automatic;
 use crate::sph::body::{Motion, Section};
 use crate::sph::eos::EosKind;
+use crate::sph::refinement::{self, Band};
 use crate::sph::sensors::SensorSpec;
 
 /// How the body moves, as written in a case (speeds downward-positive).
@@ -179,6 +180,10 @@ pub struct Setup {
         skip_serializing_if = "is_zero"
     )]
     pub initial_immersion: f64,
+    /// The band of base resolution of a refined tank (the far field at 2 dp,
+    /// [`crate::sph::refinement`]); `None` for one resolution throughout.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub refinement: Option<Band>,
     pub sensors: Vec<SensorSpec>,
     /// Time between particle snapshots (VTK/PNG); `None` for none.
     #[serde(rename = "snapshot_interval_s")]
@@ -233,6 +238,8 @@ pub struct Overrides {
     pub filter_cutoff_hz: Option<f64>,
     /// Keel depth below the water at rest at t = 0 (m; None: 0, the keel at the surface).
     pub initial_immersion: Option<f64>,
+    /// A refined tank: base resolution in a band around the body, 2 dp beyond (None: off).
+    pub refinement: Option<bool>,
 }
 
 /// Whether particle shifting is on unless a case says otherwise.
@@ -308,8 +315,17 @@ pub fn resolve(
     let keel_depth_end = d0 + keel_depth(&built, t_end);
     let (auto_w, auto_d, auto_layer, tank_note) = automatic::tank(section, keel_depth_end);
     let tank_given = o.tank_half_width.is_some() || o.tank_depth.is_some();
-    let tank_half_width = o.tank_half_width.unwrap_or(auto_w);
-    let tank_depth = o.tank_depth.unwrap_or(auto_d);
+    let mut tank_half_width = o.tank_half_width.unwrap_or(auto_w);
+    let mut tank_depth = o.tank_depth.unwrap_or(auto_d);
+    let refinement = if o.refinement == Some(true) {
+        let (band, note) = automatic::refinement_band(section, keel_depth_end, dp);
+        tank_half_width = refinement::to_coarse_lattice(tank_half_width, dp);
+        tank_depth = refinement::to_coarse_lattice(tank_depth, dp);
+        notes.push(note);
+        Some(band)
+    } else {
+        None
+    };
     let tank_wall_height = o.tank_wall_height.unwrap_or(0.25 * tank_depth);
     // An absorbing layer comes with the automatic tank; a tank given by the user (an experiment's, say)
     // has reflecting walls unless a layer is asked for too.
@@ -372,6 +388,7 @@ pub fn resolve(
         mirror: o.mirror.unwrap_or(true),
         t_end,
         initial_immersion: d0,
+        refinement,
         sensors,
         snapshot_interval: o.snapshot_interval,
         filter_cutoff_hz: o.filter_cutoff_hz,
@@ -455,6 +472,23 @@ pub fn check(s: &Setup) -> Result<()> {
                     s.t_end
                 )));
             }
+        }
+    }
+    if let Some(band) = &s.refinement {
+        if !s.riemann || s.shifting {
+            return Err(Error::Invalid(
+                "a refined tank needs the Riemann scheme (riemann = true) without particle shifting".into(),
+            ));
+        }
+        if !(band.half_width > 0.0
+            && band.depth > 0.0
+            && band.half_width < s.tank_half_width
+            && band.depth < s.tank_depth)
+        {
+            return Err(Error::Invalid(format!(
+                "the refined band ({:.3} m half-width, {:.3} m deep) must lie inside the tank ({:.3} m, {:.3} m)",
+                band.half_width, band.depth, s.tank_half_width, s.tank_depth
+            )));
         }
     }
     if !(s.damping_zone >= 0.0 && s.damping_zone < s.tank_half_width.min(s.tank_depth)) {

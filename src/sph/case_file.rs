@@ -98,6 +98,8 @@ struct TankFile {
     wall_height_m: Option<Spanned<f64>>,
     /// Thickness of the absorbing layer along the walls and bottom (0 for none).
     damping_zone_m: Option<Spanned<f64>>,
+    /// Base resolution in a band around the body, 2 dp beyond.
+    refined: Option<bool>,
 }
 
 #[derive(Debug, Default, Deserialize)]
@@ -226,6 +228,7 @@ pub fn from_source(src: &SourceText) -> Result<Setup> {
     }
     let o = Overrides {
         initial_immersion: None,
+        refinement: f.tank.refined,
         level: f.resolution.level,
         particles_per_half_beam: opt(
             &f.resolution.particles_per_half_beam,

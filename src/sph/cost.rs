@@ -46,7 +46,13 @@ impl Estimate {
 /// Estimate the cost of `setup` run with the companions of `plan` on `threads` threads.
 pub fn estimate(setup: &Setup, plan: StudyPlan, threads: usize) -> Estimate {
     let sides = if setup.mirror { 1.0 } else { 2.0 };
-    let fluid = setup.tank_half_width * setup.tank_depth / (setup.dp * setup.dp) * sides;
+    let area = setup.tank_half_width * setup.tank_depth;
+    // A refined tank has the base spacing in its band only, and 2 dp (a quarter of the particles per
+    // area) beyond.
+    let fine = setup.refinement.map_or(area, |b| {
+        b.half_width.min(setup.tank_half_width) * b.depth.min(setup.tank_depth)
+    });
+    let fluid = (fine + 0.25 * (area - fine)) / (setup.dp * setup.dp) * sides;
     let v = setup
         .motion
         .as_ref()

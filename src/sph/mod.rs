@@ -26,6 +26,7 @@ pub mod output_dir;
 pub mod particles;
 pub mod peak_snapshot;
 pub mod rates;
+pub mod refinement;
 pub mod riemann;
 pub mod sensors;
 pub mod shifting;

@@ -25,7 +25,17 @@ pub struct Grid {
     cell_start: Vec<u32>,
     cell_of: Vec<u32>,
     order: Vec<u32>,
+    /// Per cell, whether a coarse (level > 0) particle lies within [`COARSE_REACH`] - 1 cells of it;
+    /// empty for a single-resolution run ([`Grid::mark_coarse`]).
+    near_coarse: Vec<bool>,
 }
+
+/// Cells a coarse particle (smoothing length 2h on cells of size h) searches on either side of its own:
+/// its support 4h with another coarse particle.
+pub const COARSE_REACH: usize = 4;
+/// Cells a base-resolution particle searches on either side of its own when a coarse particle may be
+/// near: the support 2 (h + 2h) / 2 = 3h of a mixed pair.
+pub const MIXED_REACH: usize = 3;
 
 impl Grid {
     /// Grid covering y in [y0, y1], z in [z0, z1] with square cells of side `cell` (at least half the
@@ -44,7 +54,103 @@ impl Grid {
             cell_start: vec![0; ny * nz + 1],
             cell_of: Vec::new(),
             order: Vec::new(),
+            near_coarse: Vec::new(),
         }
+    }
+
+    /// After [`Grid::sort`] and the permutation: mark every cell within [`MIXED_REACH`] cells of a cell
+    /// that holds a coarse particle (`level` in storage order), so that a base-resolution particle there
+    /// searches far enough for its mixed pairs (and one elsewhere only as far as its own support).
+    pub fn mark_coarse(&mut self, level: &[u8]) {
+        let (ny, nz) = (self.ny, self.nz);
+        let mut has = vec![false; ny * nz];
+        for (c, h) in has.iter_mut().enumerate() {
+            let r = self.cell_start[c] as usize..self.cell_start[c + 1] as usize;
+            *h = level[r].iter().any(|&l| l > 0);
+        }
+        let k = MIXED_REACH;
+        // Separable dilation: along the rows, then along the columns.
+        let mut rows = vec![false; ny * nz];
+        for iz in 0..nz {
+            for iy in 0..ny {
+                let (a, b) = (iy.saturating_sub(k), (iy + k).min(ny - 1));
+                rows[iz * ny + iy] = (a..=b).any(|x| has[iz * ny + x]);
+            }
+        }
+        self.near_coarse.resize(ny * nz, false);
+        for iz in 0..nz {
+            let (a, b) = (iz.saturating_sub(k), (iz + k).min(nz - 1));
+            for iy in 0..ny {
+                self.near_coarse[iz * ny + iy] = (a..=b).any(|x| rows[x * ny + iy]);
+            }
+        }
+        // The mirror image of a coarse particle in column x is x + 1 columns behind the plane, so a
+        // particle in column iy sees it within k cells only when iy + x + 1 <= k: then x is also within
+        // k columns of iy, and the dilation above has marked the cell already.
+    }
+
+    /// Cells to search on either side for a particle of `level` at (y, z): 2 for the base resolution
+    /// away from coarse particles, [`MIXED_REACH`] near them, [`COARSE_REACH`] for a coarse particle.
+    #[inline(always)]
+    pub fn reach(&self, level: u8, y: f64, z: f64) -> usize {
+        if level > 0 {
+            return COARSE_REACH;
+        }
+        let (iy, iz) = self.column_row(y, z);
+        if self
+            .near_coarse
+            .get(iz * self.ny + iy)
+            .copied()
+            .unwrap_or(false)
+        {
+            MIXED_REACH
+        } else {
+            2
+        }
+    }
+
+    /// The contiguous index ranges (rows iz-k..=iz+k, each over columns iy-k..=iy+k) that hold every
+    /// possible neighbour of a point within k cells, k at most [`COARSE_REACH`]; unused entries are empty.
+    #[inline(always)]
+    pub fn ranges_within(&self, y: f64, z: f64, k: usize) -> [Range<usize>; 2 * COARSE_REACH + 1] {
+        let (iy, iz) = self.column_row(y, z);
+        let c0 = iy.saturating_sub(k);
+        let c1 = (iy + k).min(self.ny - 1);
+        let mut out: [Range<usize>; 2 * COARSE_REACH + 1] = Default::default();
+        let r0 = iz.saturating_sub(k);
+        let r1 = (iz + k).min(self.nz - 1);
+        for (m, r) in (r0..=r1).enumerate() {
+            let row = r * self.ny;
+            out[m] = self.cell_start[row + c0] as usize..self.cell_start[row + c1 + 1] as usize;
+        }
+        out
+    }
+
+    /// Mirror-image ranges within k cells (see [`Grid::mirror_ranges`]): columns 0..=k-1-iy for a point
+    /// in column iy < k.
+    #[inline(always)]
+    pub fn mirror_ranges_within(
+        &self,
+        y: f64,
+        z: f64,
+        k: usize,
+    ) -> [Range<usize>; 2 * COARSE_REACH + 1] {
+        let mut out: [Range<usize>; 2 * COARSE_REACH + 1] = Default::default();
+        if !self.mirror {
+            return out;
+        }
+        let (iy, iz) = self.column_row(y, z);
+        if iy >= k {
+            return out;
+        }
+        let c1 = (k - 1 - iy).min(self.ny - 1);
+        let r0 = iz.saturating_sub(k);
+        let r1 = (iz + k).min(self.nz - 1);
+        for (m, r) in (r0..=r1).enumerate() {
+            let row = r * self.ny;
+            out[m] = self.cell_start[row] as usize..self.cell_start[row + c1 + 1] as usize;
+        }
+        out
     }
 
     /// Number of cells.
@@ -212,6 +318,43 @@ pub fn for_each_neighbour<F: FnMut(usize, f64, f64, f64, bool)>(
     flush(&idx[..n], true);
 }
 
+/// [`for_each_neighbour`] over the cells within `k` of the point's own (a multi-resolution search,
+/// [`Grid::reach`]).
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+pub fn for_each_neighbour_within<F: FnMut(usize, f64, f64, f64, bool)>(
+    grid: &Grid,
+    y: &[f64],
+    z: &[f64],
+    yi: f64,
+    zi: f64,
+    skip: usize,
+    support2: f64,
+    k: usize,
+    mut f: F,
+) {
+    for r in grid.ranges_within(yi, zi, k) {
+        for j in r {
+            let dy = yi - y[j];
+            let dz = zi - z[j];
+            let r2 = dy * dy + dz * dz;
+            if r2 < support2 && j != skip {
+                f(j, dy, dz, r2, false);
+            }
+        }
+    }
+    for r in grid.mirror_ranges_within(yi, zi, k) {
+        for j in r {
+            let dy = yi + y[j];
+            let dz = zi - z[j];
+            let r2 = dy * dy + dz * dz;
+            if r2 < support2 {
+                f(j, dy, dz, r2, true);
+            }
+        }
+    }
+}
+
 /// Particles per chunk of the neighbour lists (fixed, so the layout does not depend on the thread count).
 pub const LIST_CHUNK: usize = 512;
 
@@ -344,6 +487,49 @@ impl ChunkLists {
             let (ys, zs, out) = (&y[r.clone()], &z[r.clone()], &mut self.tag[..]);
             for (k, (&yj, &zj)) in ys.iter().zip(zs).enumerate() {
                 let j = r.start + k;
+                let dy = yi + yj;
+                let dz = zi - zj;
+                out[n] = j as u32 | MIRRORED;
+                n += (dy * dy + dz * dz < support2) as usize;
+            }
+        }
+        self.tag.truncate(n);
+        self.r.resize(n, 0.0);
+        self.f.resize(n, 0.0);
+    }
+
+    /// [`ChunkLists::push_candidates`] over the cells within `k` of the point's own (a
+    /// multi-resolution search, [`Grid::reach`]).
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    pub fn push_candidates_within(
+        &mut self,
+        grid: &Grid,
+        y: &[f64],
+        z: &[f64],
+        yi: f64,
+        zi: f64,
+        skip: usize,
+        support2: f64,
+        k: usize,
+    ) {
+        let mut n = self.tag.len();
+        for r in grid.ranges_within(yi, zi, k) {
+            self.tag.resize(n + r.len(), 0);
+            let (ys, zs, out) = (&y[r.clone()], &z[r.clone()], &mut self.tag[..]);
+            for (m, (&yj, &zj)) in ys.iter().zip(zs).enumerate() {
+                let j = r.start + m;
+                let dy = yi - yj;
+                let dz = zi - zj;
+                out[n] = j as u32;
+                n += ((dy * dy + dz * dz < support2) & (j != skip)) as usize;
+            }
+        }
+        for r in grid.mirror_ranges_within(yi, zi, k) {
+            self.tag.resize(n + r.len(), 0);
+            let (ys, zs, out) = (&y[r.clone()], &z[r.clone()], &mut self.tag[..]);
+            for (m, (&yj, &zj)) in ys.iter().zip(zs).enumerate() {
+                let j = r.start + m;
                 let dy = yi + yj;
                 let dz = zi - zj;
                 out[n] = j as u32 | MIRRORED;

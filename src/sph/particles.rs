@@ -35,8 +35,14 @@ pub struct Particles {
     pub rate: Vec<[f64; 3]>,
     /// Renormalised density gradient of fluid particles (Antuono et al. 2010).
     pub grad_rho: Vec<[f64; 2]>,
+    /// Resolution level: 0 at the base spacing dp, 1 at 2 dp (the coarse far field of a refined
+    /// tank, [`crate::sph::refinement`]), with smoothing length h 2^level.
+    pub level: Vec<u8>,
+    /// Whether any particle has a level above 0 (else `level` is all zeros and is not permuted).
+    levels: bool,
     scratch: Vec<f64>,
     scratch_kind: Vec<Kind>,
+    scratch_level: Vec<u8>,
 }
 
 /// The per-particle arrays the pair sums read, all cut to the same length: with one length known to the
@@ -102,6 +108,20 @@ impl Particles {
         self.p.push(p);
         self.rate.push([0.0; 3]);
         self.grad_rho.push([0.0; 2]);
+        self.level.push(0);
+    }
+
+    /// Set the resolution level of the particle pushed last.
+    pub fn set_last_level(&mut self, level: u8) {
+        if let Some(l) = self.level.last_mut() {
+            *l = level;
+            self.levels |= level > 0;
+        }
+    }
+
+    /// Whether any particle is coarser than the base spacing.
+    pub fn multi_resolution(&self) -> bool {
+        self.levels
     }
 
     /// Number of particles of a kind.
@@ -141,11 +161,22 @@ impl Particles {
             .zip(order.par_iter())
             .for_each(|(d, &k)| *d = src[k as usize]);
         std::mem::swap(&mut self.kind, &mut self.scratch_kind);
+        if !self.levels {
+            return;
+        }
+        self.scratch_level.resize(n, 0);
+        let src = &self.level;
+        self.scratch_level
+            .par_iter_mut()
+            .with_min_len(4096)
+            .zip(order.par_iter())
+            .for_each(|(d, &k)| *d = src[k as usize]);
+        std::mem::swap(&mut self.level, &mut self.scratch_level);
     }
 
     /// Bytes of particle storage per particle (state, rates, gradients and sort scratch).
     pub fn bytes_per_particle() -> usize {
-        // y z vy vz rho p mass vol + scratch: 9 f64; kind + scratch kind: 2 bytes; rate 3 f64; grad 2 f64.
-        9 * 8 + 2 + 3 * 8 + 2 * 8
+        // y z vy vz rho p mass vol + scratch: 9 f64; kind, level + scratches: 4 bytes; rate 3 f64; grad 2 f64.
+        9 * 8 + 4 + 3 * 8 + 2 * 8
     }
 }

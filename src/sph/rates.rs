@@ -15,6 +15,7 @@ use crate::sph::diffusion::antuono2010;
 use crate::sph::kernel::WendlandC2;
 use crate::sph::neighbours::{Grid, LIST_CHUNK, NeighbourLists};
 use crate::sph::particles::{Kind, Particles};
+use crate::sph::refinement::PairKernels;
 use crate::sph::riemann;
 
 /// Density rate of every fluid particle (continuity with delta-SPH diffusion) into `rate[i][2]`, over the
@@ -117,19 +118,30 @@ pub fn momentum_rates(
     // density gradient serves the delta-SPH diffusion and the shifting's density correction only; the
     // Riemann scheme without shifting needs none. Each combination gets its own compiled pass, so the
     // pair loop carries no tests of the configuration.
+    //
+    // A refined tank (two resolutions, [`crate::sph::refinement`]) has its own pass: each particle
+    // searches as far as its widest pair reaches, and each pair takes the kernel of its mean smoothing
+    // length. It is built for the Riemann scheme without shifting only (checked with the setup).
     let need_grad = !s.riemann || s.shifting;
     let viscous = !s.riemann && s.alpha != 0.0;
+    if pt.multi_resolution() {
+        assert!(
+            s.riemann && !need_grad,
+            "a refined tank needs the Riemann scheme without shifting"
+        );
+        return momentum_pass::<true, false, false, true>(grid, lists, pt, kernel, s);
+    }
     match (s.riemann, need_grad, viscous) {
-        (true, false, _) => momentum_pass::<true, false, false>(grid, lists, pt, kernel, s),
-        (true, true, _) => momentum_pass::<true, true, false>(grid, lists, pt, kernel, s),
-        (false, _, true) => momentum_pass::<false, true, true>(grid, lists, pt, kernel, s),
-        (false, _, false) => momentum_pass::<false, true, false>(grid, lists, pt, kernel, s),
+        (true, false, _) => momentum_pass::<true, false, false, false>(grid, lists, pt, kernel, s),
+        (true, true, _) => momentum_pass::<true, true, false, false>(grid, lists, pt, kernel, s),
+        (false, _, true) => momentum_pass::<false, true, true, false>(grid, lists, pt, kernel, s),
+        (false, _, false) => momentum_pass::<false, true, false, false>(grid, lists, pt, kernel, s),
     }
 }
 
 /// [`momentum_rates`] for one configuration: the Riemann scheme (else the standard pressure sum),
-/// the density gradient wanted, the artificial viscosity on.
-fn momentum_pass<const RIEMANN: bool, const GRAD: bool, const VISCOUS: bool>(
+/// the density gradient wanted, the artificial viscosity on, two resolutions.
+fn momentum_pass<const RIEMANN: bool, const GRAD: bool, const VISCOUS: bool, const MULTI: bool>(
     grid: &Grid,
     lists: &mut NeighbourLists,
     pt: &mut Particles,
@@ -138,6 +150,7 @@ fn momentum_pass<const RIEMANN: bool, const GRAD: bool, const VISCOUS: bool>(
 ) -> u64 {
     let kernel = *kernel;
     let h = kernel.h();
+    let pairs = PairKernels::new(h);
     let visc = if VISCOUS {
         s.alpha * h * s.c0 * s.rho0
     } else {
@@ -150,6 +163,7 @@ fn momentum_pass<const RIEMANN: bool, const GRAD: bool, const VISCOUS: bool>(
     let mut out = std::mem::take(&mut pt.rate);
     let mut grad = std::mem::take(&mut pt.grad_rho);
     let n = {
+        let level = &pt.level[..];
         let pt = pt.view();
         out.par_chunks_mut(LIST_CHUNK)
             .zip(grad.par_chunks_mut(LIST_CHUNK))
@@ -173,7 +187,18 @@ fn momentum_pass<const RIEMANN: bool, const GRAD: bool, const VISCOUS: bool>(
                     // each entry (distance, kernel factor, fluid flag, kept for the continuity pass)
                     // and sums its terms: the accumulators stay in registers, and the neighbour's
                     // position is loaded once.
-                    list.push_candidates(grid, pt.y, pt.z, yi, zi, i, kernel.support2());
+                    let li = if MULTI { level[i] } else { 0 };
+                    if MULTI {
+                        let reach = grid.reach(li, yi, zi);
+                        let support2 = if reach == 2 {
+                            kernel.support2()
+                        } else {
+                            pairs.widest_support2(li)
+                        };
+                        list.push_candidates_within(grid, pt.y, pt.z, yi, zi, i, support2, reach);
+                    } else {
+                        list.push_candidates(grid, pt.y, pt.z, yi, zi, i, kernel.support2());
+                    }
                     let mut entries = list.last_entries();
                     let (mut ay, mut az, mut vy_acc, mut vz_acc) = (0.0, 0.0, 0.0, 0.0);
                     let mut sums = antuono2010::GradientSums::default();
@@ -188,7 +213,11 @@ fn momentum_pass<const RIEMANN: bool, const GRAD: bool, const VISCOUS: bool>(
                         };
                         let r2 = dy * dy + dz * dz;
                         let r = r2.sqrt();
-                        let f = kernel.grad_factor(r);
+                        let f = if MULTI {
+                            pairs.pair(li, level[j]).grad_factor(r)
+                        } else {
+                            kernel.grad_factor(r)
+                        };
                         let fluid = pt.kind[j] == Kind::Fluid;
                         entries.complete(k, r, f, fluid);
                         let rho_j = pt.rho[j];

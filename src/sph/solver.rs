@@ -38,6 +38,7 @@ use crate::sph::kernel::WendlandC2;
 use crate::sph::neighbours::{Grid, NeighbourLists};
 use crate::sph::particles::{Kind, Particles};
 use crate::sph::rates::{continuity_rates, momentum_rates};
+use crate::sph::refinement::{self, PairKernels};
 use crate::sph::sensors::{History, SensorSet};
 use crate::sph::shifting::Shifting;
 use crate::sph::tank::Tank;
@@ -129,17 +130,31 @@ impl Simulation {
         };
         let mut pt = Particles::default();
         let d0 = setup.initial_immersion;
-        match &section {
-            // A section immersed at the start: no fluid inside it or within dp/2 of its contour (the
-            // spacing a fluid particle keeps from a wall), in the body frame (keel at z = -d0).
+        // A section immersed at the start: no fluid inside it or within dp/2 of its contour (the
+        // spacing a fluid particle keeps from a wall), in the body frame (keel at z = -d0).
+        let keep = |y: f64, z: f64| match &section {
             Some(sec) if d0 > 0.0 => {
-                let c = sec.full_contour();
-                let keep = |y: f64, z: f64| {
-                    !sec.contains(y, z + d0) && body::distance_to_polyline(c, y, z + d0) >= 0.5 * dp
-                };
-                tank.fill_where(&mut pt, dp, layers, mirror, &eos, setup.g, &keep);
+                !sec.contains(y, z + d0)
+                    && body::distance_to_polyline(sec.full_contour(), y, z + d0) >= 0.5 * dp
             }
-            _ => tank.fill(&mut pt, dp, layers, mirror, &eos, setup.g),
+            _ => true,
+        };
+        match &setup.refinement {
+            Some(band) => refinement::fill(
+                &mut pt,
+                tank.half_width,
+                tank.depth,
+                tank.wall_height,
+                band,
+                dp,
+                layers,
+                mirror,
+                &eos,
+                setup.g,
+                &keep,
+            ),
+            None if d0 > 0.0 => tank.fill_where(&mut pt, dp, layers, mirror, &eos, setup.g, &keep),
+            None => tank.fill(&mut pt, dp, layers, mirror, &eos, setup.g),
         }
         let mut body = BodyState {
             z_keel: -d0,
@@ -166,7 +181,8 @@ impl Simulation {
             contour = body::contour_points(sec, 0.5 * dp, !mirror);
         }
         let sensors = SensorSet::new(&setup.sensors, section.as_ref(), dp)?;
-        let l = layers as f64 * dp;
+        // Wall layers are 2 dp thick each in a refined tank.
+        let l = layers as f64 * dp * if setup.refinement.is_some() { 2.0 } else { 1.0 };
         let y0 = if mirror { 0.0 } else { -tank.half_width - l };
         let top = tank
             .wall_height
@@ -238,6 +254,9 @@ impl Simulation {
         let t0 = std::time::Instant::now();
         let order = self.grid.sort(&self.pt.y, &self.pt.z);
         self.pt.permute(order);
+        if self.pt.multi_resolution() {
+            self.grid.mark_coarse(&self.pt.level);
+        }
         self.lists_fresh = false;
         self.counters.add(Stage::Sort, t0.elapsed());
     }
@@ -292,8 +311,12 @@ impl Simulation {
         let zk = self.body.z_keel;
         let (grid, pt, kernel, eos, g) =
             (&self.grid, &self.pt, &self.kernel, &self.eos, self.setup.g);
+        let pairs = pt.multi_resolution().then(|| PairKernels::new(kernel.h()));
         let sample = |y: f64, z: f64| {
-            let (p, shepard) = adami2012::wall_pressure(grid, pt, kernel, eos, g, y, z, acc);
+            let (p, shepard) = match &pairs {
+                Some(k) => adami2012::wall_pressure_at_level(grid, pt, k, 0, eos, g, y, z, acc),
+                None => adami2012::wall_pressure(grid, pt, kernel, eos, g, y, z, acc),
+            };
             if shepard < DRY_SHEPARD { 0.0 } else { p }
         };
         self.contour_p

@@ -11,8 +11,9 @@ use rayon::prelude::*;
 
 use crate::sph::eos::Eos;
 use crate::sph::kernel::WendlandC2;
-use crate::sph::neighbours::{Grid, for_each_neighbour};
+use crate::sph::neighbours::{Grid, for_each_neighbour, for_each_neighbour_within};
 use crate::sph::particles::{Kind, Particles};
+use crate::sph::refinement::PairKernels;
 
 /// Wall pressure at point (y, z) of a wall moving with acceleration (ay, az), and the Shepard sum
 /// sum_f V_f W_wf of the fluid around it (0 when no fluid is near; about 1/2 for a fully wetted flat wall).
@@ -58,6 +59,57 @@ pub fn wall_pressure(
     ((spw + gy * sry + gz * srz) / sw, shepard)
 }
 
+/// [`wall_pressure`] in a refined tank ([`crate::sph::refinement`]): at a point of resolution `level`,
+/// each fluid neighbour weighted with the kernel of the pair's mean smoothing length.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+pub fn wall_pressure_at_level(
+    grid: &Grid,
+    pt: &Particles,
+    kernels: &PairKernels,
+    level: u8,
+    eos: &Eos,
+    g: f64,
+    y: f64,
+    z: f64,
+    accel: [f64; 2],
+) -> (f64, f64) {
+    let (mut sw, mut spw, mut sry, mut srz, mut shepard) = (0.0, 0.0, 0.0, 0.0, 0.0);
+    let reach = grid.reach(level, y, z);
+    let support2 = if reach == 2 {
+        kernels.pair(0, 0).support2()
+    } else {
+        kernels.widest_support2(level)
+    };
+    for_each_neighbour_within(
+        grid,
+        &pt.y,
+        &pt.z,
+        y,
+        z,
+        usize::MAX,
+        support2,
+        reach,
+        |j, dy, dz, r2, _| {
+            if pt.kind[j] != Kind::Fluid {
+                return;
+            }
+            let w = kernels.pair(level, pt.level[j]).w(r2.sqrt());
+            let rho = pt.rho[j];
+            sw += w;
+            spw += eos.pressure(rho) * w;
+            sry += rho * dy * w;
+            srz += rho * dz * w;
+            shepard += pt.mass[j] / rho * w;
+        },
+    );
+    if sw <= 0.0 {
+        return (0.0, 0.0);
+    }
+    let (gy, gz) = (-accel[0], -g - accel[1]);
+    ((spw + gy * sry + gz * srz) / sw, shepard)
+}
+
 /// Set the pressure of every particle: equation of state for fluid, extrapolation for dummies (wall
 /// acceleration zero for tank walls, `body_accel` for body particles). Then set the dummy densities from
 /// their pressures, and the volumes used in the sums: m / rho for fluid, the fixed lattice volume
@@ -73,12 +125,35 @@ pub fn update_pressures(
     body_accel: [f64; 2],
 ) {
     let mut p = std::mem::take(&mut pt.p);
+    let multi = pt.multi_resolution();
+    let kernels = PairKernels::new(kernel.h());
     {
         let ptr: &Particles = pt;
         p.par_iter_mut()
             .with_min_len(1024)
             .enumerate()
             .for_each(|(i, pi)| {
+                if multi && ptr.kind[i] != Kind::Fluid {
+                    let accel = if ptr.kind[i] == Kind::Body {
+                        body_accel
+                    } else {
+                        [0.0; 2]
+                    };
+                    let (y, z) = (ptr.y[i], ptr.z[i]);
+                    *pi = wall_pressure_at_level(
+                        grid,
+                        ptr,
+                        &kernels,
+                        ptr.level[i],
+                        eos,
+                        g,
+                        y,
+                        z,
+                        accel,
+                    )
+                    .0;
+                    return;
+                }
                 *pi = match ptr.kind[i] {
                     Kind::Fluid => eos.pressure(ptr.rho[i]),
                     Kind::Wall => {
@@ -97,15 +172,21 @@ pub fn update_pressures(
         pt.kind.par_iter(),
         pt.p.par_iter(),
         pt.mass.par_iter(),
+        pt.level.par_iter(),
     )
         .into_par_iter()
         .with_min_len(4096)
-        .for_each(|(rho, vol, kind, p, m)| {
+        .for_each(|(rho, vol, kind, p, m, level)| {
             if *kind == Kind::Fluid {
                 *vol = m / *rho;
             } else {
                 *rho = eos.density(*p);
-                *vol = dummy_vol;
+                // A coarse dummy stands for a 2 dp x 2 dp cell.
+                *vol = if *level > 0 {
+                    4.0 * dummy_vol
+                } else {
+                    dummy_vol
+                };
             }
         });
 }
