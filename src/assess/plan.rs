@@ -376,7 +376,7 @@ pub struct Wave<'a> {
 
 /// The event of one station at one speed in one regular wave: a keel entry where the keel emerges, a
 /// flare event where it stays immersed but the water reaches sensors above the still-water line
-/// ([`flare_event`]), otherwise none. `section` is the station's offsets (half points, keel first) and
+/// (`flare_event`), otherwise none. `section` is the station's offsets (half points, keel first) and
 /// its keel-to-deck height. Shared by the assessment and the sweeps.
 pub fn station_event(
     st: &crate::seakeeping::analysis::RegularStation,

@@ -121,14 +121,14 @@ pub struct EventResult {
     pub slam_flag: SlamFlag,
     /// Velocity at keel entry (m/s), when the keel emerges.
     pub entry_velocity_m_per_s: Option<f64>,
-    /// The kind of water entry: "keel entry", or "flare, keel immersed to <d0> m" for a flare event (the
+    /// The kind of water entry: "keel entry", or "flare, keel immersed to `<d0>` m" for a flare event (the
     /// keel stays immersed; see `flare_event`); None when nothing runs.
     pub entry_kind: Option<String>,
     /// For a flare event: its start (least immersion d0), the sensors struck, the relative velocity at
     /// flare impact and the idealisation it rests on.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub flare_event: Option<super::plan::FlareEvent>,
-    /// For an irregular sea's design event (wave "<sea>/design"): how it is defined, with N or alpha.
+    /// For an irregular sea's design event (wave `"<sea>/design"`): how it is defined, with N or alpha.
     pub design_event: Option<super::design_event::DesignEvent>,
     /// Generalised Wagner force and MLM sensor pressures (when the keel emerges).
     pub analytic: Option<Estimate>,

@@ -105,7 +105,7 @@ impl LowPass {
     }
 }
 
-/// Resample (t, x) linearly onto a uniform grid of spacing dt from t[0]; returns (t, x).
+/// Resample (t, x) linearly onto a uniform grid of spacing dt from `t[0]`; returns (t, x).
 pub fn resample_uniform(t: &[f64], x: &[f64], dt: f64) -> (Vec<f64>, Vec<f64>) {
     let mut tu = Vec::new();
     let mut xu = Vec::new();

@@ -11,7 +11,9 @@
 //!   local deadrise below the chine, not below 10 deg) and at the tank bottom (depth D), and a Mach number
 //!   V / c0 of at most 0.1 ([`crate::sph::automatic::sound_speed`]);
 //! * tank: a few half-breadths of clear water beside and under the body, plus an absorbing layer along
-//!   the walls and the bottom ([`crate::sph::automatic::tank`]);
+//!   the walls and the bottom ([`crate::sph::automatic::tank`]); on request (`refined = true` under
+//!   `[tank]`, `--refined-tank`) the spacing dp in a band around the body only and 2 dp beyond
+//!   ([`crate::sph::automatic::refinement_band`], [`crate::sph::refinement`]);
 //! * end time: when the impact is over, from Wagner's wetting and the entry velocity
 //!   ([`crate::sph::automatic`]).
 //!

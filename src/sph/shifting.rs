@@ -20,7 +20,7 @@
 //! of this implementation, not part of the published scheme).
 //!
 //! After the shift the density is carried to the new position with the renormalised density gradient of the
-//! delta-SPH term, rho_i <- rho_i + dr_i . <grad rho>_i (first-order Taylor correction, Lind et al. 2012,
+//! delta-SPH term, rho_i <- rho_i + dr_i . \<grad rho\>_i (first-order Taylor correction, Lind et al. 2012,
 //! J. Comput. Phys. 231, 1499-1523, eq. 14); velocities are not corrected.
 //!
 //! Every particle's displacement is a gather over its own neighbour list in the fixed list order, so the

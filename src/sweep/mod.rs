@@ -7,7 +7,7 @@
 //!
 //! The layers, in the order the data flows:
 //!
-//! * [`file`]: the sweep file and its checks (located errors);
+//! * [`file`](mod@file): the sweep file and its checks (located errors);
 //! * [`cases`] (with [`lhs`]): the cases, in a fixed order;
 //! * [`transform`]: the hull variants;
 //! * [`prepare`]: everything decided before running (variants checked, content keys);

@@ -1,5 +1,5 @@
 //! Hulls from where they live: a lines-plan offsets grid (CSV, see [`grid_csv`]) or a closed triangulated
-//! hull surface (STL, ASCII or binary, sliced at stations by [`slice`]), turned into the content of a
+//! hull surface (STL, ASCII or binary, sliced at stations by [`slice`](mod@slice)), turned into the content of a
 //! `hull.toml` ([`HullSpec`]) that the usual reader then checks.
 //!
 //! What a hull file needs beyond the geometry comes from [`ImportOptions`]: the draft is required; Lpp

@@ -2,11 +2,11 @@
 //! 532-549; Antuono et al. 2012, eq. 4):
 //!
 //! D_i = delta h c0 sum_j psi_ij . grad_i W_ij V_j,
-//! psi_ij = 2 (rho_j - rho_i) r_ji / |r_ji|^2 - (<grad rho>_i^L + <grad rho>_j^L)
+//! psi_ij = 2 (rho_j - rho_i) r_ji / |r_ji|^2 - (\<grad rho\>_i^L + \<grad rho\>_j^L)
 //!
 //! with the renormalised density gradient
 //!
-//! <grad rho>_i^L = sum_j (rho_j - rho_i) L_i grad_i W_ij V_j,   L_i = [ sum_j grad_i W_ij (x) r_ji V_j ]^-1.
+//! \<grad rho\>_i^L = sum_j (rho_j - rho_i) L_i grad_i W_ij V_j,   L_i = [ sum_j grad_i W_ij (x) r_ji V_j ]^-1.
 //!
 //! The gradient correction removes the diffusion of the hydrostatic density gradient in the interior. The
 //! renormalised gradient sums include the wall and body dummy particles (their density comes from the
