@@ -190,17 +190,20 @@ fn cost_of(jobs: &[Job], study: StudyPlan, threads: usize) -> Cost {
         wall_s: 0.0,
         threads: threads.max(1),
     };
+    let mut work = 0.0;
     for j in jobs {
         match (&j.setup, &j.cached) {
             (Ok(_), Some(_)) => c.cached += 1,
             (Ok((setup, _)), None) => {
                 c.runs += 1;
-                c.particle_steps += sph::cost::estimate(setup, study, 1).particle_steps;
+                let e = sph::cost::estimate(setup, study, 1);
+                c.particle_steps += e.particle_steps;
+                work += e.uniform_equivalent;
             }
             (Err(_), _) => {}
         }
     }
-    c.wall_s = sph::cost::wall_time(c.particle_steps, c.threads);
+    c.wall_s = sph::cost::wall_time(work, c.threads);
     c
 }
 

@@ -266,7 +266,9 @@ pub fn refinement_band(
         depth: to_coarse_lattice(keel_depth_end + clear * b, dp),
     };
     let note = format!(
-        "refined tank: particles at dp within {:.3} m of the centre plane and {:.3} m of the surface          ({REFINED_CLEAR_B} b beside the widest point and under the keel's deepest position), at 2 dp beyond          (variable-mass SPH with the mean smoothing length of each pair; the tank rounded to whole 2 dp)",
+        "refined tank: particles at dp within {:.3} m of the centre plane and {:.3} m of the surface \
+         ({REFINED_CLEAR_B} b beside the widest point and under the keel's deepest position), at 2 dp beyond \
+         (variable-mass SPH with the mean smoothing length of each pair; the tank rounded to whole 2 dp)",
         band.half_width, band.depth
     );
     (band, note)
