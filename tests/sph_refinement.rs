@@ -14,19 +14,8 @@
 
 mod common;
 
-use common::sph::{ZHAO_VELOCITY, quiet, zhao_wedge};
-use slamtool::sph::{self, MotionSpec, Overrides, RunResult};
-
-/// Largest |a - b| of the two force histories over their common steps, as a fraction of a's peak, and
-/// the ratio of the peaks b / a.
-fn force_difference(a: &RunResult, b: &RunResult) -> (f64, f64) {
-    let (fa, fb) = (&a.history.fz, &b.history.fz);
-    let n = fa.len().min(fb.len());
-    let peak_a = fa.iter().copied().fold(0.0, f64::max);
-    let peak_b = fb.iter().copied().fold(0.0, f64::max);
-    let diff = (0..n).map(|k| (fa[k] - fb[k]).abs()).fold(0.0, f64::max);
-    (diff / peak_a, peak_b / peak_a)
-}
+use common::sph::{ZHAO_VELOCITY, force_difference, quiet, zhao_wedge};
+use slamtool::sph::{self, MotionSpec, Overrides};
 
 #[test]
 fn zhao_force_in_the_refined_tank_matches_the_uniform_one() {

@@ -28,6 +28,9 @@ pub struct Grid {
     /// Per cell, whether a coarse (level > 0) particle lies within [`COARSE_REACH`] - 1 cells of it;
     /// empty for a single-resolution run ([`Grid::mark_coarse`]).
     near_coarse: Vec<bool>,
+    /// Scratch of [`Grid::mark_coarse`] (cells holding a coarse particle; their row-wise dilation).
+    has_coarse: Vec<bool>,
+    rows_coarse: Vec<bool>,
 }
 
 /// Cells a coarse particle (smoothing length 2h on cells of size h) searches on either side of its own:
@@ -55,6 +58,8 @@ impl Grid {
             cell_of: Vec::new(),
             order: Vec::new(),
             near_coarse: Vec::new(),
+            has_coarse: Vec::new(),
+            rows_coarse: Vec::new(),
         }
     }
 
@@ -63,14 +68,16 @@ impl Grid {
     /// searches far enough for its mixed pairs (and one elsewhere only as far as its own support).
     pub fn mark_coarse(&mut self, level: &[u8]) {
         let (ny, nz) = (self.ny, self.nz);
-        let mut has = vec![false; ny * nz];
+        let mut has = std::mem::take(&mut self.has_coarse);
+        let mut rows = std::mem::take(&mut self.rows_coarse);
+        has.resize(ny * nz, false);
+        rows.resize(ny * nz, false);
         for (c, h) in has.iter_mut().enumerate() {
             let r = self.cell_start[c] as usize..self.cell_start[c + 1] as usize;
             *h = level[r].iter().any(|&l| l > 0);
         }
         let k = MIXED_REACH;
         // Separable dilation: along the rows, then along the columns.
-        let mut rows = vec![false; ny * nz];
         for iz in 0..nz {
             for iy in 0..ny {
                 let (a, b) = (iy.saturating_sub(k), (iy + k).min(ny - 1));
@@ -84,6 +91,8 @@ impl Grid {
                 self.near_coarse[iz * ny + iy] = (a..=b).any(|x| rows[x * ny + iy]);
             }
         }
+        self.has_coarse = has;
+        self.rows_coarse = rows;
         // The mirror image of a coarse particle in column x is x + 1 columns behind the plane, so a
         // particle in column iy sees it within k cells only when iy + x + 1 <= k: then x is also within
         // k columns of iy, and the dilation above has marked the cell already.

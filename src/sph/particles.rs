@@ -4,9 +4,10 @@ use rayon::prelude::*;
 
 /// What a particle represents.
 #[repr(u8)]
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Default)]
 pub enum Kind {
     /// Water.
+    #[default]
     Fluid = 0,
     /// Dummy particle of a fixed tank wall.
     Wall = 1,
@@ -133,9 +134,6 @@ impl Particles {
     /// are recomputed after every sort and are not carried over (volumes are, for the first pass after
     /// the sort).
     pub fn permute(&mut self, order: &[u32]) {
-        let n = self.len();
-        self.scratch.resize(n, 0.0);
-        self.scratch_kind.resize(n, Kind::Fluid);
         for a in [
             &mut self.y,
             &mut self.z,
@@ -146,32 +144,12 @@ impl Particles {
             &mut self.mass,
             &mut self.vol,
         ] {
-            let src: &Vec<f64> = a;
-            self.scratch
-                .par_iter_mut()
-                .with_min_len(4096)
-                .zip(order.par_iter())
-                .for_each(|(d, &k)| *d = src[k as usize]);
-            std::mem::swap(a, &mut self.scratch);
+            gather(a, &mut self.scratch, order);
         }
-        let src = &self.kind;
-        self.scratch_kind
-            .par_iter_mut()
-            .with_min_len(4096)
-            .zip(order.par_iter())
-            .for_each(|(d, &k)| *d = src[k as usize]);
-        std::mem::swap(&mut self.kind, &mut self.scratch_kind);
-        if !self.levels {
-            return;
+        gather(&mut self.kind, &mut self.scratch_kind, order);
+        if self.levels {
+            gather(&mut self.level, &mut self.scratch_level, order);
         }
-        self.scratch_level.resize(n, 0);
-        let src = &self.level;
-        self.scratch_level
-            .par_iter_mut()
-            .with_min_len(4096)
-            .zip(order.par_iter())
-            .for_each(|(d, &k)| *d = src[k as usize]);
-        std::mem::swap(&mut self.level, &mut self.scratch_level);
     }
 
     /// Bytes of particle storage per particle (state, rates, gradients and sort scratch).
@@ -179,4 +157,16 @@ impl Particles {
         // y z vy vz rho p mass vol + scratch: 9 f64; kind, level + scratches: 4 bytes; rate 3 f64; grad 2 f64.
         9 * 8 + 4 + 3 * 8 + 2 * 8
     }
+}
+
+/// Permute `a` so that position k holds old element `order[k]`, through `scratch` (swapped in).
+fn gather<T: Copy + Default + Send + Sync>(a: &mut Vec<T>, scratch: &mut Vec<T>, order: &[u32]) {
+    scratch.resize(a.len(), T::default());
+    let src: &Vec<T> = a;
+    scratch
+        .par_iter_mut()
+        .with_min_len(4096)
+        .zip(order.par_iter())
+        .for_each(|(d, &k)| *d = src[k as usize]);
+    std::mem::swap(a, scratch);
 }

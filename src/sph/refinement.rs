@@ -22,6 +22,7 @@
 use crate::sph::eos::Eos;
 use crate::sph::kernel::WendlandC2;
 use crate::sph::particles::{Kind, Particles};
+use crate::sph::tank::Tank;
 
 /// Kernels of the pairs of a two-level run: index l_i + l_j (0 base-base, 1 mixed, 2 coarse-coarse),
 /// with smoothing lengths h, 1.5 h and 2 h.
@@ -77,16 +78,14 @@ pub fn to_coarse_lattice(x: f64, dp: f64) -> f64 {
     ((x / (2.0 * dp)).round()).max(1.0) * 2.0 * dp
 }
 
-/// Fill a tank of `half_width` x `depth` (whole numbers of 2 dp) with water at rest under hydrostatic
+/// Fill `tank` (half-width and depth whole numbers of 2 dp) with water at rest under hydrostatic
 /// pressure: a dp lattice in `band` and a 2 dp lattice (level 1) elsewhere, whose cells are the 2 x 2
 /// blocks of the fine one; then `layers` layers of 2 dp wall dummies (level 1) under the bottom and
-/// beside the side walls up to `wall_height`. Fluid is placed only where `keep(y, z)`.
+/// beside the side walls ([`Tank::fill_walls`]). Fluid is placed only where `keep(y, z)`.
 #[allow(clippy::too_many_arguments)]
 pub fn fill(
     pt: &mut Particles,
-    half_width: f64,
-    depth: f64,
-    wall_height: f64,
+    tank: &Tank,
     band: &Band,
     dp: f64,
     layers: usize,
@@ -96,8 +95,8 @@ pub fn fill(
     keep: &dyn Fn(f64, f64) -> bool,
 ) {
     let dc = 2.0 * dp;
-    let ny = (half_width / dc).round() as i64;
-    let nz = (depth / dc).round() as i64;
+    let ny = (tank.half_width / dc).round() as i64;
+    let nz = (tank.depth / dc).round() as i64;
     let hydro = |z: f64| eos.rho0 * g * (-z);
     let y_start = if mirror { 0 } else { -ny };
     for kz in 0..nz {
@@ -119,31 +118,7 @@ pub fn fill(
             }
         }
     }
-    let l = layers as i64;
-    let zb = -(nz as f64) * dc;
-    let wall = |pt: &mut Particles, y: f64, z: f64| {
-        let p = hydro(z).max(0.0);
-        pt.push(Kind::Wall, y, z, 0.0, 0.0, eos.density(p), p, dc * dc);
-        pt.set_last_level(1);
-    };
-    let y_lo = if mirror { 0 } else { -ny - l };
-    for k in 0..l {
-        let z = zb - (k as f64 + 0.5) * dc;
-        for i in y_lo..ny + l {
-            wall(pt, (i as f64 + 0.5) * dc, z);
-        }
-    }
-    let n_up = nz + (wall_height / dc).ceil() as i64;
-    for k in 0..n_up {
-        let z = zb + (k as f64 + 0.5) * dc;
-        for m in 0..l {
-            let y = (ny + m) as f64 * dc + 0.5 * dc;
-            wall(pt, y, z);
-            if !mirror {
-                wall(pt, -y, z);
-            }
-        }
-    }
+    tank.fill_walls(pt, dc, layers, mirror, eos, g, 1);
 }
 
 #[cfg(test)]
@@ -164,19 +139,12 @@ mod tests {
         };
         let mut pt = Particles::default();
         let dp = 0.01;
-        fill(
-            &mut pt,
-            0.5,
-            0.4,
-            0.1,
-            &band,
-            dp,
-            3,
-            true,
-            &eos,
-            0.0,
-            &|_, _| true,
-        );
+        let tank = Tank {
+            half_width: 0.5,
+            depth: 0.4,
+            wall_height: 0.1,
+        };
+        fill(&mut pt, &tank, &band, dp, 3, true, &eos, 0.0, &|_, _| true);
         let fluid: Vec<usize> = (0..pt.len())
             .filter(|&i| pt.kind[i] == Kind::Fluid)
             .collect();

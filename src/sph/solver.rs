@@ -141,17 +141,7 @@ impl Simulation {
         };
         match &setup.refinement {
             Some(band) => refinement::fill(
-                &mut pt,
-                tank.half_width,
-                tank.depth,
-                tank.wall_height,
-                band,
-                dp,
-                layers,
-                mirror,
-                &eos,
-                setup.g,
-                &keep,
+                &mut pt, &tank, band, dp, layers, mirror, &eos, setup.g, &keep,
             ),
             None if d0 > 0.0 => tank.fill_where(&mut pt, dp, layers, mirror, &eos, setup.g, &keep),
             None => tank.fill(&mut pt, dp, layers, mirror, &eos, setup.g),

@@ -61,53 +61,59 @@ impl Tank {
                 pt.push(Kind::Fluid, y, z, 0.0, 0.0, eos.density(p), p, dp * dp);
             }
         }
+        self.fill_walls(pt, dp, layers, mirror, eos, g, 0);
+    }
+
+    /// The wall dummies of a tank filled on a lattice of spacing `spacing` (whole cells across the
+    /// half-width and the depth): `layers` layers under the bottom and beside the side walls up to
+    /// `wall_height` above the surface, at resolution `level` ([`Particles::level`]).
+    #[allow(clippy::too_many_arguments)]
+    pub fn fill_walls(
+        &self,
+        pt: &mut Particles,
+        spacing: f64,
+        layers: usize,
+        mirror: bool,
+        eos: &Eos,
+        g: f64,
+        level: u8,
+    ) {
+        let ny = (self.half_width / spacing).round() as i64;
+        let nz = (self.depth / spacing).round() as i64;
+        let hydro = |z: f64| eos.rho0 * g * (-z);
+        let mut wall = |y: f64, z: f64, p: f64| {
+            pt.push(
+                Kind::Wall,
+                y,
+                z,
+                0.0,
+                0.0,
+                eos.density(p),
+                p,
+                spacing * spacing,
+            );
+            pt.set_last_level(level);
+        };
         let l = layers as i64;
-        let zb = -(nz as f64) * dp;
+        let zb = -(nz as f64) * spacing;
         let y_lo = if mirror { 0 } else { -ny - l };
         // Bottom (under the water and the side walls).
         for k in 0..l {
-            let z = zb - (k as f64 + 0.5) * dp;
-            let p = hydro(z);
+            let z = zb - (k as f64 + 0.5) * spacing;
             for i in y_lo..ny + l {
-                pt.push(
-                    Kind::Wall,
-                    (i as f64 + 0.5) * dp,
-                    z,
-                    0.0,
-                    0.0,
-                    eos.density(p),
-                    p,
-                    dp * dp,
-                );
+                wall((i as f64 + 0.5) * spacing, z, hydro(z));
             }
         }
         // Side walls from the bottom up to wall_height.
-        let n_up = nz + (self.wall_height / dp).ceil() as i64;
+        let n_up = nz + (self.wall_height / spacing).ceil() as i64;
         for k in 0..n_up {
-            let z = zb + (k as f64 + 0.5) * dp;
+            let z = zb + (k as f64 + 0.5) * spacing;
             let p = hydro(z).max(0.0);
             for m in 0..l {
-                pt.push(
-                    Kind::Wall,
-                    (ny + m) as f64 * dp + 0.5 * dp,
-                    z,
-                    0.0,
-                    0.0,
-                    eos.density(p),
-                    p,
-                    dp * dp,
-                );
+                let y = (ny + m) as f64 * spacing + 0.5 * spacing;
+                wall(y, z, p);
                 if !mirror {
-                    pt.push(
-                        Kind::Wall,
-                        -((ny + m) as f64 * dp + 0.5 * dp),
-                        z,
-                        0.0,
-                        0.0,
-                        eos.density(p),
-                        p,
-                        dp * dp,
-                    );
+                    wall(-y, z, p);
                 }
             }
         }

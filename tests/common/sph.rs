@@ -89,3 +89,14 @@ pub fn wedge_run(
         result: sph::run(setup, &quiet()).unwrap(),
     }
 }
+
+/// Largest |other - reference| of two section-force histories over their common steps, as a fraction of
+/// the reference's peak, and the ratio of the peaks other / reference.
+pub fn force_difference(reference: &sph::RunResult, other: &sph::RunResult) -> (f64, f64) {
+    let (fr, fo) = (&reference.history.fz, &other.history.fz);
+    let n = fr.len().min(fo.len());
+    let peak_r = fr.iter().copied().fold(0.0, f64::max);
+    let peak_o = fo.iter().copied().fold(0.0, f64::max);
+    let diff = (0..n).map(|k| (fr[k] - fo[k]).abs()).fold(0.0, f64::max);
+    (diff / peak_r, peak_o / peak_r)
+}
