@@ -24,6 +24,7 @@ fn zhao_force_in_the_refined_tank_matches_the_uniform_one() {
     let o = Overrides {
         particles_per_half_beam: Some(20.0),
         t_end: Some(0.025),
+        refinement: Some(false),
         ..Default::default()
     };
     let uniform = sph::case::resolve("uniform", &zhao_wedge(), &motion, Vec::new(), &o).unwrap();
@@ -76,4 +77,35 @@ fn a_refined_tank_needs_the_riemann_scheme_without_shifting() {
     )
     .unwrap_err();
     assert!(err.to_string().contains("Riemann"), "{err}");
+}
+
+#[test]
+fn the_automatic_tank_is_refined_unless_given_or_the_numerics_forbid_it() {
+    let motion = MotionSpec::Constant { speed_m_s: 2.0 };
+    let resolve = |o: Overrides| {
+        sph::case::resolve("default", &zhao_wedge(), &motion, Vec::new(), &o).unwrap()
+    };
+    let base = Overrides {
+        particles_per_half_beam: Some(10.0),
+        ..Default::default()
+    };
+    assert!(resolve(base.clone()).refinement.is_some(), "default: refined");
+    let given = resolve(Overrides {
+        tank_half_width: Some(1.0),
+        tank_depth: Some(0.6),
+        ..base.clone()
+    });
+    assert!(given.refinement.is_none(), "a given tank stays uniform");
+    assert!(given.notes.iter().any(|n| n.contains("uniform tank")));
+    let delta = resolve(Overrides {
+        riemann: Some(false),
+        ..base.clone()
+    });
+    assert!(delta.refinement.is_none(), "delta-SPH: uniform");
+    assert!(delta.notes.iter().any(|n| n.contains("Riemann")));
+    let asked = resolve(Overrides {
+        refinement: Some(false),
+        ..base
+    });
+    assert!(asked.refinement.is_none(), "--tank uniform");
 }

@@ -7,10 +7,10 @@ use clap::Args;
 use slamtool::assess::{self, Fidelity, Settings};
 use slamtool::hull::Hull;
 use slamtool::sea::SeaState;
-use slamtool::sph::{Level, Overrides, StudyPlan};
+use slamtool::sph::{Level, Overrides, StudyPlan, TankLayout};
 use slamtool::{Error, Result};
 
-use super::global::{self, JsonArg};
+use super::global::{self, JsonArg, tank_refinement};
 use super::progress_bar;
 use super::station;
 
@@ -67,9 +67,14 @@ pub struct AssessArgs {
     /// Particles across the largest half-breadth (overrides --resolution; for quick checks).
     #[arg(long, value_name = "N")]
     particles_per_half_beam: Option<f64>,
-    /// Refined tanks: the particle spacing in a band around the body (1.5 half-breadths beside it and
-    /// under the keel's deepest position), twice the spacing beyond, for about a third of the particles.
-    #[arg(long)]
+    /// Particle layout of the automatic tank: `refined` has the spacing in a band around the body
+    /// (1.5 half-breadths beside it and under the keel's deepest position) and twice the spacing
+    /// beyond, for about a third of the particles; `uniform` has one spacing throughout
+    /// [default: refined; uniform with numerics a refined tank does not support].
+    #[arg(long, value_enum, value_name = "LAYOUT")]
+    tank: Option<TankLayout>,
+    /// The spelling of the previous release for `--tank refined`.
+    #[arg(long, hide = true, conflicts_with = "tank")]
     refined_tank: bool,
     /// Resolutions per SPH run including the reported one (1 = no convergence statement, 2 or 3).
     #[arg(long, default_value_t = 2, value_parser = clap::value_parser!(u8).range(1..=3))]
@@ -197,7 +202,7 @@ pub fn run(a: AssessArgs) -> Result<()> {
         overrides: Overrides {
             level: Some(a.resolution),
             particles_per_half_beam: a.particles_per_half_beam,
-            refinement: a.refined_tank.then_some(true),
+            refinement: tank_refinement(a.tank, a.refined_tank),
             ..Default::default()
         },
         study: StudyPlan {

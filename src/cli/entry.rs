@@ -5,11 +5,11 @@ use std::path::PathBuf;
 use clap::{Args, Subcommand};
 use slamtool::provenance::{Provenance, TOOL};
 use slamtool::sph::{
-    self, Level, MotionSpec, Overrides, RunOptions, RunResult, SensorMethod, SensorSpec,
+    self, Level, MotionSpec, Overrides, RunOptions, RunResult, SensorMethod, SensorSpec, TankLayout,
     body::Section,
 };
 
-use super::global::{self, JsonArg};
+use super::global::{self, JsonArg, tank_refinement};
 use super::progress_bar;
 use super::station::StationArg;
 
@@ -84,9 +84,14 @@ pub struct Numerics {
     /// Whole tank instead of a half tank with a symmetry plane.
     #[arg(long)]
     full_domain: bool,
-    /// Refined tank: the particle spacing in a band around the body (1.5 half-breadths beside it and
-    /// under the keel's deepest position), twice the spacing beyond, for about a third of the particles.
-    #[arg(long)]
+    /// Particle layout of the automatic tank: `refined` has the spacing in a band around the body
+    /// (1.5 half-breadths beside it and under the keel's deepest position) and twice the spacing
+    /// beyond, for about a third of the particles; `uniform` has one spacing throughout
+    /// [default: refined; uniform with numerics a refined tank does not support].
+    #[arg(long, value_enum, value_name = "LAYOUT")]
+    tank: Option<TankLayout>,
+    /// The spelling of the previous release for `--tank refined`.
+    #[arg(long, hide = true, conflicts_with = "tank")]
     refined_tank: bool,
 }
 
@@ -160,7 +165,7 @@ fn overrides(n: &Numerics, c: &Common) -> Overrides {
         c0: n.c0,
         t_end: n.t_end,
         mirror: n.full_domain.then_some(false),
-        refinement: n.refined_tank.then_some(true),
+        refinement: tank_refinement(n.tank, n.refined_tank),
         filter_cutoff_hz: c.filter_hz,
         sensor_method: c.sensor_method,
         ..Default::default()
@@ -181,6 +186,7 @@ fn settings(n: Option<&Numerics>, c: &Common) -> serde_json::Value {
         v["c0_m_per_s"] = serde_json::json!(n.c0);
         v["t_end_s"] = serde_json::json!(n.t_end);
         v["full_domain"] = serde_json::json!(n.full_domain);
+        v["tank"] = serde_json::json!(n.tank);
         v["refined_tank"] = serde_json::json!(n.refined_tank);
     }
     v

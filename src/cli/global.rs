@@ -8,6 +8,7 @@ use std::path::Path;
 use std::sync::OnceLock;
 
 use clap::{Args, ValueEnum};
+use slamtool::sph::TankLayout;
 
 /// When to colour the output.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, ValueEnum)]
@@ -140,4 +141,11 @@ pub fn print_json(value: serde_json::Value) {
 /// The line every text report ends with when it wrote files.
 pub fn files_written_line(dir: &Path) -> String {
     format!("files written to {}", dir.display())
+}
+
+/// The `refinement` override of an SPH run from `--tank` (or the hidden `--refined-tank` of the previous
+/// release): None leaves the library's default.
+pub fn tank_refinement(tank: Option<TankLayout>, refined_tank: bool) -> Option<bool> {
+    tank.map(|t| t == TankLayout::Refined)
+        .or(refined_tank.then_some(true))
 }

@@ -11,9 +11,10 @@
 //!   local deadrise below the chine, not below 10 deg) and at the tank bottom (depth D), and a Mach number
 //!   V / c0 of at most 0.1 ([`crate::sph::automatic::sound_speed`]);
 //! * tank: a few half-breadths of clear water beside and under the body, plus an absorbing layer along
-//!   the walls and the bottom ([`crate::sph::automatic::tank`]); on request (`refined = true` under
-//!   `[tank]`, `--refined-tank`) the spacing dp in a band around the body only and 2 dp beyond
-//!   ([`crate::sph::automatic::refinement_band`], [`crate::sph::refinement`]);
+//!   the walls and the bottom ([`crate::sph::automatic::tank`]), refined: the spacing dp in a band around
+//!   the body only and 2 dp beyond ([`crate::sph::automatic::refinement_band`],
+//!   [`crate::sph::refinement`]). A tank given in a case, other numerics, `refined = false` under
+//!   `[tank]` or `--tank uniform` give one spacing throughout;
 //! * end time: when the impact is over, from Wagner's wetting and the entry velocity
 //!   ([`crate::sph::automatic`]).
 //!
@@ -120,6 +121,17 @@ impl Level {
             Level::Fine => 160.0,
         }
     }
+}
+
+/// The particle layout of an automatic tank ([`crate::sph::refinement`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
+#[serde(rename_all = "lowercase")]
+pub enum TankLayout {
+    /// The spacing dp in a band around the body (1.5 half-breadths beside it and under the keel's
+    /// deepest position), 2 dp beyond: about a third of the particles.
+    Refined,
+    /// The spacing dp throughout.
+    Uniform,
 }
 
 /// Everything a run needs, fully resolved. Written to the output folder as `setup.json`.
@@ -240,7 +252,8 @@ pub struct Overrides {
     pub filter_cutoff_hz: Option<f64>,
     /// Keel depth below the water at rest at t = 0 (m; None: 0, the keel at the surface).
     pub initial_immersion: Option<f64>,
-    /// A refined tank: base resolution in a band around the body, 2 dp beyond (None: off).
+    /// A refined tank: base resolution in a band around the body, 2 dp beyond (None: the default,
+    /// refined with an automatic tank and the Riemann scheme without shifting, else uniform).
     pub refinement: Option<bool>,
 }
 
@@ -319,7 +332,25 @@ pub fn resolve(
     let tank_given = o.tank_half_width.is_some() || o.tank_depth.is_some();
     let mut tank_half_width = o.tank_half_width.unwrap_or(auto_w);
     let mut tank_depth = o.tank_depth.unwrap_or(auto_d);
-    let refinement = if o.refinement == Some(true) {
+    // The refined tank is the default wherever it applies: an automatic tank and the Riemann scheme
+    // without shifting. A tank given by the user (an experiment's) stays uniform unless asked.
+    let riemann = o.riemann.unwrap_or(DEFAULT_RIEMANN);
+    let shifting = o.shifting.unwrap_or(DEFAULT_SHIFTING);
+    let refine = match o.refinement {
+        Some(r) => r,
+        None if tank_given => {
+            notes.push("uniform tank (the tank is given; `refined = true` refines it)".into());
+            false
+        }
+        None if !riemann || shifting => {
+            notes.push(
+                "uniform tank (a refined one needs the Riemann scheme without shifting)".into(),
+            );
+            false
+        }
+        None => true,
+    };
+    let refinement = if refine {
         let (band, note) = automatic::refinement_band(section, keel_depth_end, dp);
         tank_half_width = refinement::to_coarse_lattice(tank_half_width, dp);
         tank_depth = refinement::to_coarse_lattice(tank_depth, dp);
@@ -379,8 +410,8 @@ pub fn resolve(
         delta: o.delta.unwrap_or(0.1),
         alpha: o.alpha.unwrap_or(0.02),
         cfl: o.cfl.unwrap_or(DEFAULT_CFL),
-        shifting: o.shifting.unwrap_or(DEFAULT_SHIFTING),
-        riemann: o.riemann.unwrap_or(DEFAULT_RIEMANN),
+        shifting,
+        riemann,
         force: o.force.unwrap_or_default(),
         sensor_method: o.sensor_method.unwrap_or_default(),
         tank_half_width,

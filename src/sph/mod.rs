@@ -45,7 +45,7 @@ use crate::error::{Error, Result};
 use crate::files::write_text_atomic;
 use crate::loads::peaks::{Summary, summarise_after};
 
-pub use case::{Level, MotionSpec, Overrides, SensorMethod, Setup};
+pub use case::{Level, MotionSpec, Overrides, SensorMethod, Setup, TankLayout};
 pub use counters::Counters;
 pub use sensors::{History, SensorSpec};
 pub use solver::Simulation;

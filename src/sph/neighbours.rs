@@ -508,7 +508,9 @@ impl ChunkLists {
     }
 
     /// [`ChunkLists::push_candidates`] over the cells within `k` of the point's own (a
-    /// multi-resolution search, [`Grid::reach`]).
+    /// multi-resolution search, [`Grid::reach`]), keeping a candidate j within the support of its
+    /// pair: `support2[0]` when j is at the base resolution (`level[j]` = 0), `support2[1]` when it is
+    /// coarse.
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
     pub fn push_candidates_within(
@@ -516,33 +518,38 @@ impl ChunkLists {
         grid: &Grid,
         y: &[f64],
         z: &[f64],
+        level: &[u8],
         yi: f64,
         zi: f64,
         skip: usize,
-        support2: f64,
+        support2: [f64; 2],
         k: usize,
     ) {
         let mut n = self.tag.len();
         for r in grid.ranges_within(yi, zi, k) {
             self.tag.resize(n + r.len(), 0);
-            let (ys, zs, out) = (&y[r.clone()], &z[r.clone()], &mut self.tag[..]);
-            for (m, (&yj, &zj)) in ys.iter().zip(zs).enumerate() {
+            let (ys, zs, ls) = (&y[r.clone()], &z[r.clone()], &level[r.clone()]);
+            let out = &mut self.tag[..];
+            for (m, ((&yj, &zj), &lj)) in ys.iter().zip(zs).zip(ls).enumerate() {
                 let j = r.start + m;
                 let dy = yi - yj;
                 let dz = zi - zj;
                 out[n] = j as u32;
-                n += ((dy * dy + dz * dz < support2) & (j != skip)) as usize;
+                let s2 = support2[(lj != 0) as usize];
+                n += ((dy * dy + dz * dz < s2) & (j != skip)) as usize;
             }
         }
         for r in grid.mirror_ranges_within(yi, zi, k) {
             self.tag.resize(n + r.len(), 0);
-            let (ys, zs, out) = (&y[r.clone()], &z[r.clone()], &mut self.tag[..]);
-            for (m, (&yj, &zj)) in ys.iter().zip(zs).enumerate() {
+            let (ys, zs, ls) = (&y[r.clone()], &z[r.clone()], &level[r.clone()]);
+            let out = &mut self.tag[..];
+            for (m, ((&yj, &zj), &lj)) in ys.iter().zip(zs).zip(ls).enumerate() {
                 let j = r.start + m;
                 let dy = yi + yj;
                 let dz = zi - zj;
                 out[n] = j as u32 | MIRRORED;
-                n += (dy * dy + dz * dz < support2) as usize;
+                let s2 = support2[(lj != 0) as usize];
+                n += (dy * dy + dz * dz < s2) as usize;
             }
         }
         self.tag.truncate(n);

@@ -190,12 +190,10 @@ fn momentum_pass<const RIEMANN: bool, const GRAD: bool, const VISCOUS: bool, con
                     let li = if MULTI { level[i] } else { 0 };
                     if MULTI {
                         let reach = grid.reach(li, yi, zi);
-                        let support2 = if reach == 2 {
-                            kernel.support2()
-                        } else {
-                            pairs.widest_support2(li)
-                        };
-                        list.push_candidates_within(grid, pt.y, pt.z, yi, zi, i, support2, reach);
+                        let support2 = pairs.supports2(li);
+                        list.push_candidates_within(
+                            grid, pt.y, pt.z, level, yi, zi, i, support2, reach,
+                        );
                     } else {
                         list.push_candidates(grid, pt.y, pt.z, yi, zi, i, kernel.support2());
                     }

@@ -55,6 +55,17 @@ impl PairKernels {
     pub fn widest_support2(&self, level: u8) -> f64 {
         self.k[level as usize + 1].support2()
     }
+
+    /// The squared supports of the pairs of a particle of `level`: with a base-resolution partner
+    /// (index 0) and with a coarse one (index 1). A neighbour search filtered by these keeps no pair
+    /// whose kernel is zero.
+    #[inline(always)]
+    pub fn supports2(&self, level: u8) -> [f64; 2] {
+        [
+            self.k[level as usize].support2(),
+            self.k[level as usize + 1].support2(),
+        ]
+    }
 }
 
 /// The band of base resolution: |y| <= `half_width` and z >= -`depth` (the calm surface at z = 0).
