@@ -95,7 +95,18 @@ fn a_single_level_says_not_assessed_and_a_companion_that_cannot_run_is_left_out(
     let r =
         sph::run_with_convergence(small_wedge(12.0, None), &RunOptions::default(), single).unwrap();
     let conv = r.summary.convergence.unwrap();
-    assert!(conv.peaks.iter().all(|p| p.verdict == Verdict::NotAssessed));
+    // One resolution: no GCI and never a claim of convergence. (A peak can still be flagged on its
+    // own: at 12 particles the first sensor's peak is the tail of the contact transient, "not
+    // converged", and a sensor reached right at the end of this short run may be dry.)
+    assert!(
+        conv.peaks
+            .iter()
+            .all(|p| p.gci.is_none()
+                && !matches!(p.verdict, Verdict::Converged | Verdict::Acceptable)),
+        "{:?}",
+        conv.peaks
+    );
+    assert!(conv.peaks.iter().any(|p| p.verdict == Verdict::NotAssessed));
     // At 20 particles per half-beam and a spacing ratio of 2, the third level (5 particles across) is too
     // coarse to inform the estimate: it is left out with the reason, and the statement rests on the two
     // levels that ran.

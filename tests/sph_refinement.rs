@@ -1,5 +1,5 @@
-//! The refined tank (the base spacing in a band around the body, 2 dp beyond; `sph::refinement`)
-//! against the uniform tank of the same case: same section, motion, sound speed and absorbing layer.
+//! The refined tank (the base spacing in a band around the body, 2 dp beyond; `sph::refinement`; the
+//! default with the automatic tank) against the uniform tank of the same case: same section, motion, sound speed and absorbing layer.
 //! The section force must agree within 2 % of its peak over the whole history, the criterion the
 //! automatic tank meets against an echo-free one (`tests/sph_tank.rs`).
 //!
@@ -89,7 +89,10 @@ fn the_automatic_tank_is_refined_unless_given_or_the_numerics_forbid_it() {
         particles_per_half_beam: Some(10.0),
         ..Default::default()
     };
-    assert!(resolve(base.clone()).refinement.is_some(), "default: refined");
+    assert!(
+        resolve(base.clone()).refinement.is_some(),
+        "default: refined"
+    );
     let given = resolve(Overrides {
         tank_half_width: Some(1.0),
         tank_depth: Some(0.6),

@@ -22,9 +22,12 @@ fn both_tanks(
     n_half: f64,
     t_end: Option<f64>,
 ) -> (RunResult, RunResult) {
+    // Both tanks uniform: this is the tank's size and absorbing layer alone (the refined tank of the
+    // default is checked against the uniform one in `tests/sph_refinement.rs`).
     let o = Overrides {
         particles_per_half_beam: Some(n_half),
         t_end,
+        refinement: Some(false),
         ..Default::default()
     };
     let small = sph::case::resolve("auto-tank", section, &motion, Vec::new(), &o).unwrap();

@@ -5,8 +5,8 @@ use std::path::PathBuf;
 use clap::{Args, Subcommand};
 use slamtool::provenance::{Provenance, TOOL};
 use slamtool::sph::{
-    self, Level, MotionSpec, Overrides, RunOptions, RunResult, SensorMethod, SensorSpec, TankLayout,
-    body::Section,
+    self, Level, MotionSpec, Overrides, RunOptions, RunResult, SensorMethod, SensorSpec,
+    TankLayout, body::Section,
 };
 
 use super::global::{self, JsonArg, tank_refinement};
