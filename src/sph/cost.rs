@@ -16,9 +16,11 @@ pub const PARTICLE_STEPS_PER_THREAD_S: f64 = 1.4e6;
 /// Cost of a fluid particle-step of a refined tank ([`crate::sph::refinement`]) relative to one of a
 /// uniform tank, counted into the estimate: coarse particles scan 9 rows of the fine cell grid, and the
 /// body's dummies and the per-step grid work weigh more among fewer water particles. Measured on the
-/// Ochi 0.093 Lpp station at 1.5 m/s (default resolution with its companion, 2 threads): 41.5 s for
-/// 63,600 water particles uniform, 19.0 s for 22,800 refined, 1.28 times the time per particle-step.
-pub const REFINED_COST: f64 = 1.3;
+/// 2-core machine: 1.28 on the Ochi 0.093 Lpp station at 1.5 m/s (41.5 s for 63,600 water particles
+/// uniform, 19.0 s for 22,800 refined) before the search kept each pair within its own support (3-4 %
+/// faster since); 1.05 over the whole Ochi `--fidelity sph` assessment after it (1.43e9 particle-steps
+/// in 538 s on two threads). The value lies between the two, on the long side.
+pub const REFINED_COST: f64 = 1.15;
 
 /// Estimated wall time above which a run is refused unless forced (s).
 pub const MAX_WALL_S: f64 = 3600.0;
