@@ -452,6 +452,11 @@ pub fn run(
         "fidelity": s.fidelity.name(),
         "resolution": s.overrides.level,
         "particles_per_half_beam": s.overrides.particles_per_half_beam,
+        "tank": match s.overrides.refinement {
+            Some(true) => "refined",
+            Some(false) => "uniform",
+            None => "default: refined (dp in a band around the body, 2 dp beyond)",
+        },
         "convergence_levels": s.study.levels,
         "convergence_ratio": s.study.ratio,
         "strips": s.strips,
