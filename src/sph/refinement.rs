@@ -21,8 +21,8 @@
 
 use crate::sph::eos::Eos;
 use crate::sph::kernel::WendlandC2;
-use crate::sph::particles::{Kind, Particles};
-use crate::sph::tank::Tank;
+use crate::sph::particles::Particles;
+use crate::sph::tank::{Tank, push_water_at_rest};
 
 /// Kernels of the pairs of a two-level run: index l_i + l_j (0 base-base, 1 mixed, 2 coarse-coarse),
 /// with smoothing lengths h, 1.5 h and 2 h.
@@ -108,7 +108,6 @@ pub fn fill(
     let dc = 2.0 * dp;
     let ny = (tank.half_width / dc).round() as i64;
     let nz = (tank.depth / dc).round() as i64;
-    let hydro = |z: f64| eos.rho0 * g * (-z);
     let y_start = if mirror { 0 } else { -ny };
     for kz in 0..nz {
         for iy in y_start..ny {
@@ -118,14 +117,11 @@ pub fn fill(
                 for (dz, dy) in [(-0.5, -0.5), (-0.5, 0.5), (0.5, -0.5), (0.5, 0.5)] {
                     let (y, z) = (yc + dy * dp, zc - dz * dp);
                     if keep(y, z) {
-                        let p = hydro(z);
-                        pt.push(Kind::Fluid, y, z, 0.0, 0.0, eos.density(p), p, dp * dp);
+                        push_water_at_rest(pt, eos, g, y, z, dp, 0);
                     }
                 }
             } else if keep(yc, zc) {
-                let p = hydro(zc);
-                pt.push(Kind::Fluid, yc, zc, 0.0, 0.0, eos.density(p), p, dc * dc);
-                pt.set_last_level(1);
+                push_water_at_rest(pt, eos, g, yc, zc, dc, 1);
             }
         }
     }
@@ -136,6 +132,7 @@ pub fn fill(
 mod tests {
     use super::*;
     use crate::sph::eos::EosKind;
+    use crate::sph::particles::Kind;
 
     #[test]
     fn the_two_lattices_fill_the_tank_with_its_water_mass() {

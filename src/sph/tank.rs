@@ -49,16 +49,13 @@ impl Tank {
         let ny = (self.half_width / dp).round() as i64;
         let nz = (self.depth / dp).round() as i64;
         let y_start = if mirror { 0 } else { -ny };
-        let hydro = |z: f64| eos.rho0 * g * (-z);
         for k in 0..nz {
             let z = -(k as f64 + 0.5) * dp;
-            let p = hydro(z);
             for i in y_start..ny {
                 let y = (i as f64 + 0.5) * dp;
-                if !keep(y, z) {
-                    continue;
+                if keep(y, z) {
+                    push_water_at_rest(pt, eos, g, y, z, dp, 0);
                 }
-                pt.push(Kind::Fluid, y, z, 0.0, 0.0, eos.density(p), p, dp * dp);
             }
         }
         self.fill_walls(pt, dp, layers, mirror, eos, g, 0);
@@ -117,5 +114,32 @@ impl Tank {
                 }
             }
         }
+    }
+}
+
+/// Push a fluid particle at rest at (y, z) under hydrostatic pressure p = rho0 g (-z), on a lattice
+/// cell of side `spacing` (its volume) at resolution `level` ([`Particles::level`]).
+pub fn push_water_at_rest(
+    pt: &mut Particles,
+    eos: &Eos,
+    g: f64,
+    y: f64,
+    z: f64,
+    spacing: f64,
+    level: u8,
+) {
+    let p = eos.rho0 * g * (-z);
+    pt.push(
+        Kind::Fluid,
+        y,
+        z,
+        0.0,
+        0.0,
+        eos.density(p),
+        p,
+        spacing * spacing,
+    );
+    if level > 0 {
+        pt.set_last_level(level);
     }
 }

@@ -15,6 +15,44 @@ use crate::sph::neighbours::{Grid, for_each_neighbour, for_each_neighbour_within
 use crate::sph::particles::{Kind, Particles};
 use crate::sph::refinement::PairKernels;
 
+/// The sums of eq. 27 over the fluid neighbours of a wall point: sum W, sum p W, sum rho r W (two
+/// components), and the Shepard sum sum V W.
+#[derive(Default)]
+struct WallSums {
+    w: f64,
+    pw: f64,
+    rho_y: f64,
+    rho_z: f64,
+    shepard: f64,
+}
+
+impl WallSums {
+    /// Add fluid particle `j` at offset (dy, dz) from the wall point, with kernel value `w`.
+    #[inline(always)]
+    fn add(&mut self, pt: &Particles, eos: &Eos, j: usize, dy: f64, dz: f64, w: f64) {
+        let rho = pt.rho[j];
+        self.w += w;
+        self.pw += eos.pressure(rho) * w;
+        self.rho_y += rho * dy * w;
+        self.rho_z += rho * dz * w;
+        self.shepard += pt.mass[j] / rho * w;
+    }
+
+    /// The wall pressure of eq. 27 for gravity `g` and wall acceleration `accel`, and the Shepard sum;
+    /// (0, 0) with no fluid near.
+    #[inline(always)]
+    fn pressure(&self, g: f64, accel: [f64; 2]) -> (f64, f64) {
+        if self.w <= 0.0 {
+            return (0.0, 0.0);
+        }
+        let (gy, gz) = (-accel[0], -g - accel[1]);
+        (
+            (self.pw + gy * self.rho_y + gz * self.rho_z) / self.w,
+            self.shepard,
+        )
+    }
+}
+
 /// Wall pressure at point (y, z) of a wall moving with acceleration (ay, az), and the Shepard sum
 /// sum_f V_f W_wf of the fluid around it (0 when no fluid is near; about 1/2 for a fully wetted flat wall).
 /// `g` is the (downward-positive) gravitational acceleration.
@@ -30,7 +68,7 @@ pub fn wall_pressure(
     z: f64,
     accel: [f64; 2],
 ) -> (f64, f64) {
-    let (mut sw, mut spw, mut sry, mut srz, mut shepard) = (0.0, 0.0, 0.0, 0.0, 0.0);
+    let mut sums = WallSums::default();
     for_each_neighbour(
         grid,
         &pt.y,
@@ -44,19 +82,10 @@ pub fn wall_pressure(
                 return;
             }
             let w = kernel.w(r2.sqrt());
-            let rho = pt.rho[j];
-            sw += w;
-            spw += eos.pressure(rho) * w;
-            sry += rho * dy * w;
-            srz += rho * dz * w;
-            shepard += pt.mass[j] / rho * w;
+            sums.add(pt, eos, j, dy, dz, w);
         },
     );
-    if sw <= 0.0 {
-        return (0.0, 0.0);
-    }
-    let (gy, gz) = (-accel[0], -g - accel[1]);
-    ((spw + gy * sry + gz * srz) / sw, shepard)
+    sums.pressure(g, accel)
 }
 
 /// [`wall_pressure`] in a refined tank ([`crate::sph::refinement`]): at a point of resolution `level`,
@@ -74,7 +103,7 @@ pub fn wall_pressure_at_level(
     z: f64,
     accel: [f64; 2],
 ) -> (f64, f64) {
-    let (mut sw, mut spw, mut sry, mut srz, mut shepard) = (0.0, 0.0, 0.0, 0.0, 0.0);
+    let mut sums = WallSums::default();
     let reach = grid.reach(level, y, z);
     let support2 = if reach == 2 {
         kernels.pair(0, 0).support2()
@@ -95,19 +124,10 @@ pub fn wall_pressure_at_level(
                 return;
             }
             let w = kernels.pair(level, pt.level[j]).w(r2.sqrt());
-            let rho = pt.rho[j];
-            sw += w;
-            spw += eos.pressure(rho) * w;
-            sry += rho * dy * w;
-            srz += rho * dz * w;
-            shepard += pt.mass[j] / rho * w;
+            sums.add(pt, eos, j, dy, dz, w);
         },
     );
-    if sw <= 0.0 {
-        return (0.0, 0.0);
-    }
-    let (gy, gz) = (-accel[0], -g - accel[1]);
-    ((spw + gy * sry + gz * srz) / sw, shepard)
+    sums.pressure(g, accel)
 }
 
 /// Set the pressure of every particle: equation of state for fluid, extrapolation for dummies (wall
