@@ -345,10 +345,19 @@ pub fn appendix(r: &mut Report, saved: &Saved) {
             g(num(s, "dp_m").map(|x| x * 1e3), 3),
             g(num(s, "c0_m_per_s"), 2),
             format!(
-                "{} x {}",
+                "{}x{}",
                 g(num(st, "tank_half_width_m"), 3),
                 g(num(st, "tank_depth_m"), 3)
             ),
+            if st["refinement"].is_object() {
+                format!(
+                    "{}x{}",
+                    g(num(&st["refinement"], "half_width_m"), 3),
+                    g(num(&st["refinement"], "depth_m"), 3)
+                )
+            } else {
+                "all".into()
+            },
             g(num(s, "t_end_s").map(|x| x * 1e3), 1),
             s["fluid_particles"]
                 .as_u64()
@@ -363,7 +372,9 @@ pub fn appendix(r: &mut Report, saved: &Saved) {
         r.push(Block::Table {
             caption:
                 "SPH runs: particle spacing dp (mm), sound speed c0 (m/s), tank half-width x depth \
-                      (m), end time (ms), water particles, time steps, filter cut-off (Hz)"
+                      (m), the band of spacing dp in a refined tank (half-width x depth, m; 2 dp beyond) \
+                      or all of a uniform one, end time (ms), water particles, time steps, filter cut-off \
+                      (Hz)"
                     .into(),
             header: [
                 "station",
@@ -372,6 +383,7 @@ pub fn appendix(r: &mut Report, saved: &Saved) {
                 "dp mm",
                 "c0 m/s",
                 "tank m",
+                "dp band m",
                 "t_end ms",
                 "particles",
                 "steps",
