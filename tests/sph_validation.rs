@@ -56,6 +56,7 @@ fn still_tank(dp: f64) -> Setup {
         cfl: 0.2,
         shifting: sph::case::DEFAULT_SHIFTING,
         riemann: sph::case::DEFAULT_RIEMANN,
+        divergence_correction: sph::case::DEFAULT_DIVERGENCE_CORRECTION,
         force: Default::default(),
         sensor_method: Default::default(),
         tank_half_width: 0.15,

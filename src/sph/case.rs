@@ -20,7 +20,8 @@
 //!
 //! Numerics (`[numerics]` in a case file): `riemann` (default true: the low-dissipation Riemann pair terms
 //! of [`crate::sph::riemann`]; false: delta-SPH with artificial viscosity), `shifting` (default false:
-//! particle shifting of [`crate::sph::shifting`]), `force` (`"pair_forces"`, the default, or `"contour"`),
+//! particle shifting of [`crate::sph::shifting`]), `divergence_correction` (default true: the
+//! kernel-gradient-corrected velocity divergence of [`crate::sph::kernel_correction`]), `force` (`"pair_forces"`, the default, or `"contour"`),
 //! and `c0_m_s`, `h_over_dp`, `eos`, `delta`, `alpha`, `cfl`, `mirror`. The defaults are the combination
 //! that measured best against the Zhao et al. (1996) 2D solution, the Wagner and similarity peak pressures
 //! and the drop tests (see `tests/sph_validation.rs`).
@@ -165,6 +166,11 @@ pub struct Setup {
     /// ([`crate::sph::riemann`]).
     #[serde(default)]
     pub riemann: bool,
+    /// The velocity divergence of the continuity equation with the kernel-gradient correction
+    /// ([`crate::sph::kernel_correction`]). On by default; false in the summaries of runs made before
+    /// it existed.
+    #[serde(default)]
+    pub divergence_correction: bool,
     /// How the section force is computed.
     #[serde(default)]
     pub force: ForceMethod,
@@ -240,6 +246,7 @@ pub struct Overrides {
     pub cfl: Option<f64>,
     pub shifting: Option<bool>,
     pub riemann: Option<bool>,
+    pub divergence_correction: Option<bool>,
     pub force: Option<ForceMethod>,
     pub sensor_method: Option<SensorMethod>,
     pub tank_half_width: Option<f64>,
@@ -273,6 +280,10 @@ pub const MAX_MACH: f64 = 0.1;
 
 /// Whether the Riemann pair terms are on unless a case says otherwise.
 pub const DEFAULT_RIEMANN: bool = true;
+
+/// Whether the velocity divergence is kernel-gradient corrected unless a case says otherwise
+/// ([`crate::sph::kernel_correction`]).
+pub const DEFAULT_DIVERGENCE_CORRECTION: bool = true;
 
 /// Resolve a case: fill every automatic choice not overridden, and record how.
 pub fn resolve(
@@ -397,6 +408,16 @@ pub fn resolve(
             c.value
         }
     };
+    let divergence_correction = o
+        .divergence_correction
+        .unwrap_or(DEFAULT_DIVERGENCE_CORRECTION);
+    if !divergence_correction {
+        notes.push(
+            "velocity divergence without the kernel-gradient correction (divergence_correction = false): \
+             free-surface particles ahead of the jet root may be compressed spuriously"
+                .into(),
+        );
+    }
     let setup = Setup {
         name: name.to_string(),
         section_points: Some(section.half_points().to_vec()),
@@ -412,6 +433,7 @@ pub fn resolve(
         cfl: o.cfl.unwrap_or(DEFAULT_CFL),
         shifting,
         riemann,
+        divergence_correction,
         force: o.force.unwrap_or_default(),
         sensor_method: o.sensor_method.unwrap_or_default(),
         tank_half_width,

@@ -20,6 +20,7 @@ pub mod eos;
 pub mod frame;
 pub mod integrator;
 pub mod kernel;
+pub mod kernel_correction;
 pub mod neighbours;
 pub mod output;
 pub mod output_dir;

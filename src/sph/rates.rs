@@ -13,6 +13,7 @@ use rayon::prelude::*;
 use crate::sph::case::Setup;
 use crate::sph::diffusion::antuono2010;
 use crate::sph::kernel::WendlandC2;
+use crate::sph::kernel_correction;
 use crate::sph::neighbours::{Grid, LIST_CHUNK, NeighbourLists};
 use crate::sph::particles::{Kind, Particles};
 use crate::sph::refinement::PairKernels;
@@ -27,16 +28,18 @@ pub fn continuity_rates(
     kernel: &WendlandC2,
     s: &Setup,
 ) {
-    if s.riemann {
-        continuity_pass::<true>(lists, pt, kernel, s);
-    } else {
-        continuity_pass::<false>(lists, pt, kernel, s);
+    match (s.riemann, s.divergence_correction) {
+        (true, false) => continuity_pass::<true, false>(lists, pt, kernel, s),
+        (false, false) => continuity_pass::<false, false>(lists, pt, kernel, s),
+        (true, true) => continuity_pass::<true, true>(lists, pt, kernel, s),
+        (false, true) => continuity_pass::<false, true>(lists, pt, kernel, s),
     }
 }
 
-/// [`continuity_rates`] with the Riemann dissipation (else the delta-SPH diffusion), compiled
-/// separately so that the pair loop carries no test of the scheme.
-fn continuity_pass<const RIEMANN: bool>(
+/// [`continuity_rates`] with the Riemann dissipation (else the delta-SPH diffusion) and with the
+/// kernel-gradient-corrected divergence ([`kernel_correction`]) or without, compiled separately so that
+/// the pair loop carries no test of the scheme.
+fn continuity_pass<const RIEMANN: bool, const CORRECTED: bool>(
     lists: &NeighbourLists,
     pt: &mut Particles,
     kernel: &WendlandC2,
@@ -63,6 +66,7 @@ fn continuity_pass<const RIEMANN: bool>(
                     // Riemann dissipation is scaled by rho_i, delta-SPH by delta h c0.
                     let diff_scale = if RIEMANN { rho_i } else { delta_term };
                     let gi = grad_rho[i];
+                    let mut corrected = kernel_correction::DivergenceSums::default();
                     let (mut div, mut diff) = (0.0, 0.0);
                     for e in list.of(k) {
                         let j = e.j;
@@ -73,7 +77,11 @@ fn continuity_pass<const RIEMANN: bool>(
                         } else {
                             (yi - pt.y[j], pt.vy[j])
                         };
-                        div += fw * ((vyi - vyj) * dy + (vzi - pt.vz[j]) * dz);
+                        if CORRECTED {
+                            corrected.add(fw, dy, dz, vyi - vyj, vzi - pt.vz[j]);
+                        } else {
+                            div += fw * ((vyi - vyj) * dy + (vzi - pt.vz[j]) * dz);
+                        }
                         // Diffusion only between fluid particles: a flux to a dummy particle would
                         // be a mass flux through the wall.
                         if e.fluid && RIEMANN {
@@ -96,6 +104,9 @@ fn continuity_pass<const RIEMANN: bool>(
                             let gsum = [gi[0] + gj[0], gi[1] + gj[1]];
                             diff += antuono2010::pair_term(fw, dy, dz, rho_i, pt.rho[j], gsum);
                         }
+                    }
+                    if CORRECTED {
+                        div = corrected.corrected();
                     }
                     out[2] = rho_i * div + diff_scale * diff;
                 }

@@ -58,6 +58,27 @@ pub fn wedge_run(
     t_frac: f64,
     method: SensorMethod,
 ) -> WedgeRun {
+    wedge_run_numerics(
+        deadrise_deg,
+        speed,
+        n_half,
+        sensors,
+        t_frac,
+        method,
+        sph::case::DEFAULT_DIVERGENCE_CORRECTION,
+    )
+}
+
+/// [`wedge_run`] with the kernel-gradient-corrected divergence on or off.
+pub fn wedge_run_numerics(
+    deadrise_deg: f64,
+    speed: f64,
+    n_half: f64,
+    sensors: usize,
+    t_frac: f64,
+    method: SensorMethod,
+    divergence_correction: bool,
+) -> WedgeRun {
     let beta = deadrise_deg.to_radians();
     let b = 0.25;
     let section = Section::wedge(beta, b, 1.5 * b * beta.tan()).unwrap();
@@ -79,6 +100,7 @@ pub fn wedge_run(
             particles_per_half_beam: Some(n_half),
             t_end: Some(t_frac * t_wet),
             sensor_method: Some(method),
+            divergence_correction: Some(divergence_correction),
             ..Default::default()
         },
     )

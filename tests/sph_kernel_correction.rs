@@ -1,0 +1,96 @@
+//! The kernel-gradient-corrected velocity divergence (`divergence_correction`,
+//! [`slamtool::sph::kernel_correction`]) against the uncorrected one on constant-speed wedges at 5 m/s,
+//! 40 particles over the half-beam (the default resolution), seven 10 mm force-panel sensors between
+//! 15 % and 60 % of the side, compared like for like with theory (Wagner's composite distribution
+//! averaged over the sensor and filtered at 2 kHz, `slamtool::validate::wedges::like_for_like_cp`).
+//!
+//! Measured (sensor peak / like-for-like reference, first to last sensor):
+//!
+//! | case | uncorrected | corrected |
+//! |---|---|---|
+//! | 30 deg, 40 particles | 0.92 1.00 1.02 1.06 1.08 1.02 0.72 (mean error 7.8 %) | 0.87 0.95 0.99 0.97 1.00 1.00 1.00 (3.3 %) |
+//! | 30 deg, 80 particles | 0.93 0.98 0.98 0.91 0.86 0.97 0.91, peaks up to 3 ms late | 0.84 0.84 0.90 0.81 0.87 0.92 0.80 (14.5 %) |
+//! | 20 deg, 40 particles (similarity) | 0.80 0.86 0.91 0.88 0.90 0.90 0.92 (11.9 %) | 0.75 0.82 0.88 0.87 0.91 0.92 0.92 (13.2 %) |
+//! | 20 deg, 80 particles | 0.88 0.86 0.85 0.79 0.77 0.76 0.81, peak-time error 9.1 % | 0.84 0.83 0.83 0.83 0.89 0.78 0.84, peak-time error 0.5 % |
+//!
+//! The uncorrected last 30 deg sensor at 40 particles (and the late peaks at 80) are the jet-root
+//! lift-off: a void trapped under the surface layer at the root once the penetration is about 8.5 dp
+//! (see the module documentation of `kernel_correction`). With the correction the root pressure no longer
+//! collapses and the peak times converge; the peak values at 80 particles are 10-20 % low at both angles
+//! (not understood yet; issue #9 item 5). The correction is the default.
+
+mod common;
+
+use common::sph::wedge_run_numerics;
+use slamtool::analytic::wagner;
+use slamtool::loads::peaks::summarise;
+use slamtool::sph::SensorMethod;
+
+const SENSORS: usize = 7;
+const CUTOFF_HZ: f64 = 2000.0;
+
+/// Sensor peak Cp / like-for-like reference Cp of each sensor, and the largest sensor peak Cp / Wagner's
+/// Cp_max, for a wedge at 5 m/s, 40 particles over the half-beam, run to 80 % of chine wetting.
+fn sensor_ratios(deadrise_deg: f64, corrected: bool) -> (Vec<f64>, f64) {
+    let speed = 5.0;
+    let run = wedge_run_numerics(
+        deadrise_deg,
+        speed,
+        40.0,
+        SENSORS,
+        0.8,
+        SensorMethod::ForcePanel,
+        corrected,
+    );
+    let t_end = run.result.summary.setup.t_end;
+    let h = &run.result.history;
+    let q = 0.5 * 1000.0 * speed * speed;
+    let mut ratios = Vec::new();
+    let mut largest: f64 = 0.0;
+    for (col, s) in h.sensors.iter().zip(&run.result.summary.setup.sensors) {
+        let peak = summarise(&h.t, col, Some(CUTOFF_HZ))
+            .unwrap()
+            .filtered
+            .unwrap();
+        let cp = peak.value / q;
+        let like = slamtool::validate::wedges::like_for_like_cp(
+            run.beta, speed, s.s_m, s.width_m, t_end, CUTOFF_HZ,
+        )
+        .unwrap();
+        ratios.push(cp / like);
+        largest = largest.max(cp);
+    }
+    let bound = largest / wagner::peak_pressure_coefficient(run.beta).unwrap();
+    eprintln!(
+        "{deadrise_deg} deg, corrected {corrected}: sensor / like-for-like {ratios:.3?}, largest / Wagner Cp_max {bound:.3}"
+    );
+    (ratios, bound)
+}
+
+/// At 30 deg the corrected sensors agree with Wagner's composite distribution: mean error below 5 %,
+/// every sensor within 15 %, and the last sensor (in the lift-off phase without the correction) within
+/// 5 % and closer to the reference than the uncorrected one.
+#[test]
+fn the_corrected_divergence_removes_the_jet_root_lift_off_at_30_deg() {
+    let (plain, _) = sensor_ratios(30.0, false);
+    let (corr, _) = sensor_ratios(30.0, true);
+    let mean = corr.iter().map(|r| (r - 1.0).abs()).sum::<f64>() / corr.len() as f64;
+    assert!(mean < 0.05, "mean error {mean}");
+    assert!(corr.iter().all(|r| (r - 1.0).abs() < 0.15), "{corr:?}");
+    let (last_c, last_p) = (corr[SENSORS - 1], plain[SENSORS - 1]);
+    assert!((last_c - 1.0).abs() < 0.05, "last sensor {last_c}");
+    assert!(
+        (last_c - 1.0).abs() < (last_p - 1.0).abs(),
+        "last sensor: corrected {last_c}, uncorrected {last_p}"
+    );
+}
+
+/// At 40 deg the uncorrected sensor peaks overshoot Wagner's point peak by about 60 % (the validation
+/// case `wedge40-pressure-bound`, a known failure); the correction brings the largest to within 10 %.
+#[test]
+fn the_corrected_divergence_removes_the_overshoot_at_40_deg() {
+    let (_, plain) = sensor_ratios(40.0, false);
+    let (_, corr) = sensor_ratios(40.0, true);
+    assert!(corr < 1.1, "largest sensor peak / Wagner Cp_max {corr}");
+    assert!(corr < plain, "corrected {corr}, uncorrected {plain}");
+}
