@@ -369,6 +369,15 @@ pub fn appendix(r: &mut Report, saved: &Saved) {
     if rows.is_empty() {
         r.para("No SPH run was made in this assessment.");
     } else {
+        let mut schemes: Vec<String> = saved
+            .runs
+            .iter()
+            .flatten()
+            .map(|run| numerics_text(&run.summary["setup"]))
+            .collect();
+        schemes.sort();
+        schemes.dedup();
+        r.para(&format!("Numerics: {}.", schemes.join("; ")));
         r.push(Block::Table {
             caption:
                 "SPH runs: particle spacing dp (mm), sound speed c0 (m/s), tank half-width x depth \
@@ -398,4 +407,66 @@ pub fn appendix(r: &mut Report, saved: &Saved) {
         "Histories (pressure, force, velocity) are plotted from the run folders named in summary.json \
          (cache/<key>/history.csv); every plotted number of every figure is in its CSV twin in figures/.",
     );
+}
+
+/// The SPH scheme of a run's setup (summary.json `setup`), in words: the pair terms, the velocity
+/// divergence, shifting, and how the section force and the sensors are computed.
+fn numerics_text(st: &serde_json::Value) -> String {
+    let on = |k: &str| st[k].as_bool().unwrap_or(false);
+    let mut parts = vec![
+        if on("riemann") {
+            "weakly compressible SPH with low-dissipation Riemann pair terms (Zhang, Hu & Adams 2017)"
+        } else {
+            "weakly compressible delta-SPH with artificial viscosity (Antuono et al. 2010)"
+        }
+        .to_string(),
+        if on("divergence_correction") {
+            "kernel-gradient-corrected velocity divergence (Bonet & Lok 1999)"
+        } else {
+            "uncorrected velocity divergence"
+        }
+        .to_string(),
+        "Adami et al. (2012) wall pressure".to_string(),
+    ];
+    if on("shifting") {
+        parts.push("particle shifting".into());
+    }
+    match st["force"].as_str() {
+        Some("pair_forces") => {
+            parts.push("section force as the sum of the fluid-body pair forces".into())
+        }
+        Some("contour") => parts.push("section force from the contour pressure".into()),
+        _ => {}
+    }
+    match st["sensor_method"].as_str() {
+        Some("interpolated") => parts
+            .push("sensor pressure as the wall pressure averaged over the sensor's width".into()),
+        Some("force-panel") => parts
+            .push("sensor pressure as the normal force on the sensor's face over its width".into()),
+        _ => {}
+    }
+    parts.join(", ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::numerics_text;
+
+    #[test]
+    fn the_numerics_are_stated_from_the_setup() {
+        let st = serde_json::json!({"riemann": true, "divergence_correction": true, "shifting": false,
+            "force": "pair_forces", "sensor_method": "interpolated"});
+        let t = numerics_text(&st);
+        assert!(
+            t.contains("Riemann") && t.contains("Bonet & Lok") && !t.contains("shifting"),
+            "{t}"
+        );
+        // A run made before the correction existed has no field: it is stated as uncorrected.
+        let old = serde_json::json!({"riemann": true, "force": "contour", "sensor_method": "force-panel"});
+        let t = numerics_text(&old);
+        assert!(
+            t.contains("uncorrected") && t.contains("contour") && t.contains("face"),
+            "{t}"
+        );
+    }
 }
