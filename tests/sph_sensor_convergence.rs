@@ -14,8 +14,9 @@
 //! * Both sensor methods showed at 30 deg a Cp that grows along the side (from the reference at the first
 //!   sensor to +15-25 % at s = 0.13-0.15 m at 40 particles), a bias of the flow that grows during the
 //!   run, not of the sensor. Diagnosed at stop 16: spurious compression of the free-surface particles
-//!   ahead of the jet root by the uncorrected divergence. The kernel-gradient-corrected divergence, now
-//!   the default, removes it (`tests/sph_kernel_correction.rs`); the tables below were measured before.
+//!   ahead of the jet root by the uncorrected divergence. The kernel-gradient-corrected divergence
+//!   (`[numerics] divergence_correction = true`, not the default) removes it for the force-panel sensors
+//!   (`tests/sph_kernel_correction.rs`) but makes the interpolated ones read 25 % low.
 //! * The section force of the 30 deg wedge at 5 m/s, divided by Wagner's, stays near 0.69 (25 and 40
 //!   particles) until the penetration V t reaches about 9 dp, then drops to 0.55-0.65 while the fluid
 //!   lifts off the side near the spray root and a void opens there (at 40 particles from 10.5 ms, at 60
@@ -23,8 +24,8 @@
 //!   (s = 0.15 and 0.17 m) lie in that phase and read low. Clamping negative pressures, a Shepard density
 //!   reinitialisation every 20 steps, particle shifting, and weaker wall dissipation were each tried and
 //!   none removed it (the last made it come earlier). This was the same jet-root lift-off, removed by the
-//!   corrected divergence (the last 30 deg sensor at 40 particles: 0.72 of its reference before, 1.00
-//!   after).
+//!   corrected divergence (the last 30 deg sensor at 40 particles: 0.72 of its reference without, 1.00
+//!   with it).
 //! * The interpolated sensor's maximum comes 1.5-2 dp of root travel after the root passed (the kernel
 //!   support of the sample points filling with the fluid behind the root); its peak time converges, its
 //!   value does not. The force panel has the right peak time from 25 particles on.
