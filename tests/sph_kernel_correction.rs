@@ -95,3 +95,53 @@ fn the_corrected_divergence_removes_the_overshoot_at_40_deg() {
     assert!(corr < 1.1, "largest sensor peak / Wagner Cp_max {corr}");
     assert!(corr < plain, "corrected {corr}, uncorrected {plain}");
 }
+
+/// `--divergence-correction` on `entry wedge` turns the correction on and says so in the setup notes;
+/// without it the run is uncorrected (the default).
+#[test]
+fn the_command_line_switches_the_correction_on() {
+    let dir = tempfile::tempdir().unwrap();
+    let run = |extra: &[&str]| -> serde_json::Value {
+        let out = dir.path().join(format!("run{}", extra.len()));
+        let mut args = vec![
+            "entry",
+            "wedge",
+            "--deadrise-deg",
+            "30",
+            "--speed",
+            "5",
+            "--dp",
+            "0.025",
+            "--t-end",
+            "0.004",
+            "--convergence-levels",
+            "1",
+            "--frames",
+            "0",
+            "--json",
+            "-q",
+            "-o",
+            out.to_str().unwrap(),
+        ];
+        args.extend_from_slice(extra);
+        let o = std::process::Command::new(env!("CARGO_BIN_EXE_slamtool"))
+            .args(&args)
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        serde_json::from_slice::<serde_json::Value>(&o.stdout).unwrap()["summary"]["setup"].clone()
+    };
+    let on = run(&["--divergence-correction"]);
+    assert_eq!(on["divergence_correction"], true);
+    let noted = |s: &serde_json::Value| {
+        s["notes"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|n| n.as_str().unwrap().contains("kernel-gradient correction"))
+    };
+    assert!(noted(&on), "{on}");
+    let off = run(&[]);
+    assert_eq!(off["divergence_correction"], false);
+    assert!(!noted(&off));
+}

@@ -7,7 +7,7 @@ use clap::Args;
 use slamtool::assess::{self, Fidelity, Settings};
 use slamtool::hull::Hull;
 use slamtool::sea::SeaState;
-use slamtool::sph::{Level, Overrides, StudyPlan, TankLayout};
+use slamtool::sph::{Level, Overrides, SensorMethod, StudyPlan, TankLayout};
 use slamtool::{Error, Result};
 
 use super::global::{self, JsonArg, tank_refinement};
@@ -76,6 +76,15 @@ pub struct AssessArgs {
     /// The spelling of the previous release for `--tank refined`.
     #[arg(long, hide = true, conflicts_with = "tank")]
     refined_tank: bool,
+    /// Kernel-gradient-corrected velocity divergence in the continuity equation (Bonet & Lok 1999):
+    /// removes the spurious compression of free-surface particles ahead of the jet root and the void it
+    /// traps there; read the sensors with `--sensor-method force-panel` with it (the interpolated wall
+    /// pressure then reads the root peak low). Not the default yet (README, SPH).
+    #[arg(long)]
+    divergence_correction: bool,
+    /// How the SPH sensor pressures are computed [default: interpolated].
+    #[arg(long, value_enum)]
+    sensor_method: Option<SensorMethod>,
     /// Resolutions per SPH run including the reported one (1 = no convergence statement, 2 or 3).
     #[arg(long, default_value_t = 2, value_parser = clap::value_parser!(u8).range(1..=3))]
     convergence_levels: u8,
@@ -203,6 +212,8 @@ pub fn run(a: AssessArgs) -> Result<()> {
             level: Some(a.resolution),
             particles_per_half_beam: a.particles_per_half_beam,
             refinement: tank_refinement(a.tank, a.refined_tank),
+            divergence_correction: a.divergence_correction.then_some(true),
+            sensor_method: a.sensor_method,
             ..Default::default()
         },
         study: StudyPlan {
