@@ -161,10 +161,13 @@ fn sensor_peak_convergence() {
 ///
 /// | particles over the half-beam | 30 deg vs Wagner | 20 deg vs similarity |
 /// |---|---|---|
-/// | 15 | 9.0 % / 51 % | 15.4 % / 36 % |
-/// | 25 | 10.1 % / 27 % | 4.7 % / 20 % |
-/// | 40 | 11.6 % / 14 % | 4.6 % / 7.6 % |
-/// | 60 | 12.7 % / 19 % | 9.8 % / 3.3 % |
+/// | 15 | 9.5 % / 42 % | 17.7 % / 34 % |
+/// | 25 | 7.2 % / 19 % | 7.9 % / 17 % |
+/// | 40 | 11.7 % / 15 % | 3.3 % / 7.2 % |
+/// | 60 | 9.3 % / 12 % | 9.3 % / 6.7 % |
+///
+/// (Measured at stop 16 on the refined tank; with the opt-in kernel-gradient-corrected divergence the same
+/// sensors read 22-29 % low, `slamtool::sph::kernel_correction`.)
 ///
 /// The peak time converges, the peak value does not: its error stays at 5-15 % (plateau). The maximum
 /// of the interpolated pressure comes 1.5-2 dp of jet-root travel after the root has passed the

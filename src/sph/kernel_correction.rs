@@ -25,7 +25,7 @@
 //! sensors (pair forces) read it: at 40 particles over the half-beam their like-for-like error is 3.3 %
 //! at 30 deg and 13.2 % at 20 deg. The default interpolated sensors (the Adami wall pressure, a kernel
 //! average of the particle pressures) do not: 25.3 % and 25.0 %, with their maximum long after the root
-//! has passed (peak-time error 55 % at 30 deg), against 11.6 % and 4.6 % without the correction. The
+//! has passed (peak-time error 55 % at 30 deg), against 11.7 % and 3.3 % without the correction. The
 //! interpolated sensors' good agreement without the correction thus rests partly on the spurious
 //! surface pressure. Making the correction the default needs the force-panel sensors as the default
 //! too, checked on the hull sections of `assess`; that is left for a later stop.
