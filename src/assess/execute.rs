@@ -457,7 +457,10 @@ pub fn run(
             Some(false) => "uniform",
             None => "default: refined (dp in a band around the body, 2 dp beyond)",
         },
-        "divergence_correction": s.overrides.divergence_correction.unwrap_or(false),
+        "divergence_correction": s
+            .overrides
+            .divergence_correction
+            .unwrap_or(crate::sph::case::DEFAULT_DIVERGENCE_CORRECTION),
         "sensor_method": s.overrides.sensor_method.unwrap_or_default(),
         "convergence_levels": s.study.levels,
         "convergence_ratio": s.study.ratio,

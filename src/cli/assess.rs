@@ -7,10 +7,10 @@ use clap::Args;
 use slamtool::assess::{self, Fidelity, Settings};
 use slamtool::hull::Hull;
 use slamtool::sea::SeaState;
-use slamtool::sph::{Level, Overrides, SensorMethod, StudyPlan, TankLayout};
+use slamtool::sph::{Level, Overrides, SensorMethod, StudyPlan};
 use slamtool::{Error, Result};
 
-use super::global::{self, JsonArg, tank_refinement};
+use super::global::{self, JsonArg, SphOptions};
 use super::progress_bar;
 use super::station;
 
@@ -67,21 +67,8 @@ pub struct AssessArgs {
     /// Particles across the largest half-breadth (overrides --resolution; for quick checks).
     #[arg(long, value_name = "N")]
     particles_per_half_beam: Option<f64>,
-    /// Particle layout of the automatic tank: `refined` has the spacing in a band around the body
-    /// (1.5 half-breadths beside it and under the keel's deepest position) and twice the spacing
-    /// beyond, for about a third of the particles; `uniform` has one spacing throughout
-    /// [default: refined; uniform with numerics a refined tank does not support].
-    #[arg(long, value_enum, value_name = "LAYOUT")]
-    tank: Option<TankLayout>,
-    /// The spelling of the previous release for `--tank refined`.
-    #[arg(long, hide = true, conflicts_with = "tank")]
-    refined_tank: bool,
-    /// Kernel-gradient-corrected velocity divergence in the continuity equation (Bonet & Lok 1999):
-    /// removes the spurious compression of free-surface particles ahead of the jet root and the void it
-    /// traps there; read the sensors with `--sensor-method force-panel` with it (the interpolated wall
-    /// pressure then reads the root peak low). Not the default yet (README, SPH).
-    #[arg(long)]
-    divergence_correction: bool,
+    #[command(flatten)]
+    sph: SphOptions,
     /// How the SPH sensor pressures are computed [default: interpolated].
     #[arg(long, value_enum)]
     sensor_method: Option<SensorMethod>,
@@ -211,8 +198,8 @@ pub fn run(a: AssessArgs) -> Result<()> {
         overrides: Overrides {
             level: Some(a.resolution),
             particles_per_half_beam: a.particles_per_half_beam,
-            refinement: tank_refinement(a.tank, a.refined_tank),
-            divergence_correction: a.divergence_correction.then_some(true),
+            refinement: a.sph.refinement(),
+            divergence_correction: a.sph.divergence_correction(),
             sensor_method: a.sensor_method,
             ..Default::default()
         },

@@ -6,10 +6,10 @@ use clap::{Args, Subcommand};
 use slamtool::provenance::{Provenance, TOOL};
 use slamtool::sph::{
     self, Level, MotionSpec, Overrides, RunOptions, RunResult, SensorMethod, SensorSpec,
-    TankLayout, body::Section,
+    body::Section,
 };
 
-use super::global::{self, JsonArg, tank_refinement};
+use super::global::{self, JsonArg, SphOptions};
 use super::progress_bar;
 use super::station::StationArg;
 
@@ -84,21 +84,8 @@ pub struct Numerics {
     /// Whole tank instead of a half tank with a symmetry plane.
     #[arg(long)]
     full_domain: bool,
-    /// Particle layout of the automatic tank: `refined` has the spacing in a band around the body
-    /// (1.5 half-breadths beside it and under the keel's deepest position) and twice the spacing
-    /// beyond, for about a third of the particles; `uniform` has one spacing throughout
-    /// [default: refined; uniform with numerics a refined tank does not support].
-    #[arg(long, value_enum, value_name = "LAYOUT")]
-    tank: Option<TankLayout>,
-    /// The spelling of the previous release for `--tank refined`.
-    #[arg(long, hide = true, conflicts_with = "tank")]
-    refined_tank: bool,
-    /// Kernel-gradient-corrected velocity divergence in the continuity equation (Bonet & Lok 1999):
-    /// removes the spurious compression of free-surface particles ahead of the jet root and the void it
-    /// traps there; read the sensors with `--sensor-method force-panel` with it (the interpolated wall
-    /// pressure then reads the root peak low). Not the default yet (README, SPH).
-    #[arg(long)]
-    divergence_correction: bool,
+    #[command(flatten)]
+    sph: SphOptions,
 }
 
 /// Options shared by every entry run.
@@ -171,8 +158,8 @@ fn overrides(n: &Numerics, c: &Common) -> Overrides {
         c0: n.c0,
         t_end: n.t_end,
         mirror: n.full_domain.then_some(false),
-        refinement: tank_refinement(n.tank, n.refined_tank),
-        divergence_correction: n.divergence_correction.then_some(true),
+        refinement: n.sph.refinement(),
+        divergence_correction: n.sph.divergence_correction(),
         filter_cutoff_hz: c.filter_hz,
         sensor_method: c.sensor_method,
         ..Default::default()
@@ -193,9 +180,9 @@ fn settings(n: Option<&Numerics>, c: &Common) -> serde_json::Value {
         v["c0_m_per_s"] = serde_json::json!(n.c0);
         v["t_end_s"] = serde_json::json!(n.t_end);
         v["full_domain"] = serde_json::json!(n.full_domain);
-        v["tank"] = serde_json::json!(n.tank);
-        v["refined_tank"] = serde_json::json!(n.refined_tank);
-        v["divergence_correction"] = serde_json::json!(n.divergence_correction);
+        v["tank"] = serde_json::json!(n.sph.tank);
+        v["refined_tank"] = serde_json::json!(n.sph.refined_tank);
+        v["divergence_correction"] = serde_json::json!(n.sph.divergence_correction);
     }
     v
 }

@@ -143,9 +143,37 @@ pub fn files_written_line(dir: &Path) -> String {
     format!("files written to {}", dir.display())
 }
 
-/// The `refinement` override of an SPH run from `--tank` (or the hidden `--refined-tank` of the previous
-/// release): None leaves the library's default.
-pub fn tank_refinement(tank: Option<TankLayout>, refined_tank: bool) -> Option<bool> {
-    tank.map(|t| t == TankLayout::Refined)
-        .or(refined_tank.then_some(true))
+/// The SPH numerics options that `entry wedge`, `entry section` and `assess` share.
+#[derive(Debug, Args)]
+pub struct SphOptions {
+    /// Particle layout of the automatic tank: `refined` has the spacing in a band around the body
+    /// (1.5 half-breadths beside it and under the keel's deepest position) and twice the spacing
+    /// beyond, for about a third of the particles; `uniform` has one spacing throughout
+    /// [default: refined; uniform with numerics a refined tank does not support].
+    #[arg(long, value_enum, value_name = "LAYOUT")]
+    pub tank: Option<TankLayout>,
+    /// The spelling of the previous release for `--tank refined`.
+    #[arg(long, hide = true, conflicts_with = "tank")]
+    pub refined_tank: bool,
+    /// Kernel-gradient-corrected velocity divergence in the continuity equation (Bonet & Lok 1999):
+    /// removes the spurious compression of free-surface particles ahead of the jet root and the void it
+    /// traps there; read the sensors with `--sensor-method force-panel` with it (the interpolated wall
+    /// pressure then reads the root peak low). Not the default yet (README, SPH).
+    #[arg(long)]
+    pub divergence_correction: bool,
+}
+
+impl SphOptions {
+    /// The `refinement` override from `--tank` (or the hidden `--refined-tank` of the previous
+    /// release): None leaves the library's default.
+    pub fn refinement(&self) -> Option<bool> {
+        self.tank
+            .map(|t| t == TankLayout::Refined)
+            .or(self.refined_tank.then_some(true))
+    }
+
+    /// The `divergence_correction` override: None (the library's default) unless the flag is given.
+    pub fn divergence_correction(&self) -> Option<bool> {
+        self.divergence_correction.then_some(true)
+    }
 }

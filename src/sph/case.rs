@@ -21,8 +21,8 @@
 //! Numerics (`[numerics]` in a case file): `riemann` (default true: the low-dissipation Riemann pair terms
 //! of [`crate::sph::riemann`]; false: delta-SPH with artificial viscosity), `shifting` (default false:
 //! particle shifting of [`crate::sph::shifting`]), `divergence_correction` (default false: the
-//! kernel-gradient-corrected velocity divergence of [`crate::sph::kernel_correction`]), `force` (`"pair_forces"`, the default, or `"contour"`),
-//! and `c0_m_s`, `h_over_dp`, `eos`, `delta`, `alpha`, `cfl`, `mirror`. The defaults are the combination
+//! kernel-gradient-corrected velocity divergence of [`crate::sph::kernel_correction`]), `force`
+//! (`"pair_forces"`, the default, or `"contour"`), and `c0_m_s`, `h_over_dp`, `eos`, `delta`, `alpha`, `cfl`, `mirror`. The defaults are the combination
 //! that measured best against the Zhao et al. (1996) 2D solution, the Wagner and similarity peak pressures
 //! and the drop tests (see `tests/sph_validation.rs`).
 

@@ -40,7 +40,7 @@
 //! last two sensors then read 13 % and 23 % high.
 
 /// B^-1 = I as (yy, yz, zz).
-pub const IDENTITY: [f64; 3] = [1.0, 0.0, 1.0];
+const IDENTITY: [f64; 3] = [1.0, 0.0, 1.0];
 
 /// Smallest determinant of B_i (1 for a full support) for which the correction is applied.
 pub const MIN_DET: f64 = 0.25;
