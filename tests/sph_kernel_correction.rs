@@ -39,7 +39,7 @@
 mod common;
 
 use common::sph::wedge_run_numerics;
-use slamtool::analytic::wagner;
+use slamtool::analytic::{wagner, zhao_faltinsen1993};
 use slamtool::loads::peaks::summarise;
 use slamtool::sph::SensorMethod;
 
@@ -82,6 +82,82 @@ fn sensor_ratios(deadrise_deg: f64, corrected: bool) -> (Vec<f64>, f64) {
         "{deadrise_deg} deg, corrected {corrected}: sensor / like-for-like {ratios:.3?}, largest / Wagner Cp_max {bound:.3}"
     );
     (ratios, bound)
+}
+
+/// Measurement sweep behind the table above (asserts nothing): for each deadrise in
+/// `CONVERGENCE_SWEEP_DEG` (default 20,30), each level in `CONVERGENCE_SWEEP_LEVELS` (particles over the
+/// half-beam, default 40,80) and both divergence forms, the sensor peak / like-for-like reference, the
+/// peak-time offset from the reference in dp/V, and F_SPH / F_MLM averaged over 30-60 % of chine wetting.
+/// 160 particles take about two minutes a run on two cores.
+///
+/// `CONVERGENCE_SWEEP_LEVELS=40,80,160 cargo test --release --test sph_kernel_correction convergence_sweep -- --ignored --nocapture`
+#[test]
+#[ignore = "measurement sweep, minutes"]
+fn convergence_sweep() {
+    let list = |var: &str, default: &str| -> Vec<f64> {
+        std::env::var(var)
+            .unwrap_or(default.into())
+            .split(',')
+            .map(|x| x.trim().parse().expect("comma-separated numbers"))
+            .collect()
+    };
+    let speed = 5.0;
+    let q = 0.5 * 1000.0 * speed * speed;
+    for deg in list("CONVERGENCE_SWEEP_DEG", "20,30") {
+        for n in list("CONVERGENCE_SWEEP_LEVELS", "40,80") {
+            for corrected in [false, true] {
+                let run = wedge_run_numerics(
+                    deg,
+                    speed,
+                    n,
+                    SENSORS,
+                    0.8,
+                    SensorMethod::ForcePanel,
+                    corrected,
+                );
+                let setup = &run.result.summary.setup;
+                let h = &run.result.history;
+                // The reference peak passes the sensor centre at height (1 + z/Vt) V t above the keel.
+                let rise = zhao_faltinsen1993::peak(deg)
+                    .map(|(_, z)| 1.0 + z)
+                    .unwrap_or(0.5 * std::f64::consts::PI);
+                let mut rows = Vec::new();
+                for (col, s) in h.sensors.iter().zip(&setup.sensors) {
+                    let peak = summarise(&h.t, col, Some(CUTOFF_HZ))
+                        .unwrap()
+                        .filtered
+                        .unwrap();
+                    let like = slamtool::validate::wedges::like_for_like_cp(
+                        run.beta,
+                        speed,
+                        s.s_m,
+                        s.width_m,
+                        setup.t_end,
+                        CUTOFF_HZ,
+                    )
+                    .unwrap();
+                    let t_ref = s.s_m * run.beta.sin() / (rise * speed);
+                    rows.push((
+                        peak.value / q / like,
+                        (peak.time - t_ref) * speed / setup.dp,
+                    ));
+                }
+                let t_wet = slamtool::validate::wedges::chine_wetting_time(run.beta, 0.25, speed);
+                let f_sph = common::sph::window_mean(&h.t, &h.fz, 0.3 * t_wet, 0.6 * t_wet);
+                let k = slamtool::validate::wedges::mlm_force_coefficient(run.beta).unwrap();
+                // F_MLM = k rho V^3 t is linear in t: its window mean is its value at mid-window.
+                let f_mlm = k * 1000.0 * speed.powi(3) * 0.45 * t_wet;
+                let mean = rows.iter().map(|r| r.0).sum::<f64>() / rows.len() as f64;
+                eprintln!(
+                    "{deg} deg, {n} particles, corrected {corrected}: sensor / reference {:.3?} (mean {mean:.3}), \
+                     peak time - reference (dp/V) {:.2?}, F_SPH / F_MLM {:.3}",
+                    rows.iter().map(|r| r.0).collect::<Vec<_>>(),
+                    rows.iter().map(|r| r.1).collect::<Vec<_>>(),
+                    f_sph / f_mlm
+                );
+            }
+        }
+    }
 }
 
 /// At 30 deg the corrected sensors agree with Wagner's composite distribution: mean error below 5 %,
