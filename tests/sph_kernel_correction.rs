@@ -38,45 +38,71 @@
 
 mod common;
 
-use common::sph::wedge_run_numerics;
-use slamtool::analytic::{wagner, zhao_faltinsen1993};
+use common::sph::{WedgeRun, wedge_run_numerics};
+use slamtool::analytic::wagner;
 use slamtool::loads::peaks::summarise;
 use slamtool::sph::SensorMethod;
+use slamtool::validate::wedges;
 
 const SENSORS: usize = 7;
+const SPEED: f64 = 5.0;
 const CUTOFF_HZ: f64 = 2000.0;
 
-/// Sensor peak Cp / like-for-like reference Cp of each sensor, and the largest sensor peak Cp / Wagner's
-/// Cp_max, for a wedge at 5 m/s, 40 particles over the half-beam, run to 80 % of chine wetting.
-fn sensor_ratios(deadrise_deg: f64, corrected: bool) -> (Vec<f64>, f64) {
-    let speed = 5.0;
-    let run = wedge_run_numerics(
+/// A wedge at 5 m/s with seven 10 mm force-panel sensors, `n` particles over the half-beam, run to 80 %
+/// of chine wetting, with or without the correction.
+fn run(deadrise_deg: f64, n: f64, corrected: bool) -> WedgeRun {
+    wedge_run_numerics(
         deadrise_deg,
-        speed,
-        40.0,
+        SPEED,
+        n,
         SENSORS,
         0.8,
         SensorMethod::ForcePanel,
         corrected,
-    );
-    let t_end = run.result.summary.setup.t_end;
+    )
+}
+
+/// Each sensor's filtered peak: its Cp, its ratio to the like-for-like reference Cp, and its time
+/// minus the time the reference peak passes the sensor centre, in dp/V.
+struct SensorPeak {
+    cp: f64,
+    ratio: f64,
+    late_dp: f64,
+}
+
+fn sensor_peaks(run: &WedgeRun) -> Vec<SensorPeak> {
+    let setup = &run.result.summary.setup;
     let h = &run.result.history;
-    let q = 0.5 * 1000.0 * speed * speed;
-    let mut ratios = Vec::new();
-    let mut largest: f64 = 0.0;
-    for (col, s) in h.sensors.iter().zip(&run.result.summary.setup.sensors) {
-        let peak = summarise(&h.t, col, Some(CUTOFF_HZ))
-            .unwrap()
-            .filtered
-            .unwrap();
-        let cp = peak.value / q;
-        let like = slamtool::validate::wedges::like_for_like_cp(
-            run.beta, speed, s.s_m, s.width_m, t_end, CUTOFF_HZ,
-        )
-        .unwrap();
-        ratios.push(cp / like);
-        largest = largest.max(cp);
-    }
+    let q = 0.5 * 1000.0 * SPEED * SPEED;
+    h.sensors
+        .iter()
+        .zip(&setup.sensors)
+        .map(|(col, s)| {
+            let peak = summarise(&h.t, col, Some(CUTOFF_HZ))
+                .unwrap()
+                .filtered
+                .unwrap();
+            let cp = peak.value / q;
+            let like =
+                wedges::like_for_like_cp(run.beta, SPEED, s.s_m, s.width_m, setup.t_end, CUTOFF_HZ)
+                    .unwrap();
+            let t_ref = wedges::reference_peak_time(run.beta, SPEED, s.s_m);
+            SensorPeak {
+                cp,
+                ratio: cp / like,
+                late_dp: (peak.time - t_ref) * SPEED / setup.dp,
+            }
+        })
+        .collect()
+}
+
+/// Sensor peak Cp / like-for-like reference Cp of each sensor, and the largest sensor peak Cp / Wagner's
+/// Cp_max, at 40 particles over the half-beam.
+fn sensor_ratios(deadrise_deg: f64, corrected: bool) -> (Vec<f64>, f64) {
+    let run = run(deadrise_deg, 40.0, corrected);
+    let peaks = sensor_peaks(&run);
+    let ratios: Vec<f64> = peaks.iter().map(|p| p.ratio).collect();
+    let largest = peaks.iter().map(|p| p.cp).fold(0.0, f64::max);
     let bound = largest / wagner::peak_pressure_coefficient(run.beta).unwrap();
     eprintln!(
         "{deadrise_deg} deg, corrected {corrected}: sensor / like-for-like {ratios:.3?}, largest / Wagner Cp_max {bound:.3}"
@@ -101,58 +127,23 @@ fn convergence_sweep() {
             .map(|x| x.trim().parse().expect("comma-separated numbers"))
             .collect()
     };
-    let speed = 5.0;
-    let q = 0.5 * 1000.0 * speed * speed;
     for deg in list("CONVERGENCE_SWEEP_DEG", "20,30") {
         for n in list("CONVERGENCE_SWEEP_LEVELS", "40,80") {
             for corrected in [false, true] {
-                let run = wedge_run_numerics(
-                    deg,
-                    speed,
-                    n,
-                    SENSORS,
-                    0.8,
-                    SensorMethod::ForcePanel,
-                    corrected,
-                );
-                let setup = &run.result.summary.setup;
+                let run = run(deg, n, corrected);
+                let peaks = sensor_peaks(&run);
                 let h = &run.result.history;
-                // The reference peak passes the sensor centre at height (1 + z/Vt) V t above the keel.
-                let rise = zhao_faltinsen1993::peak(deg)
-                    .map(|(_, z)| 1.0 + z)
-                    .unwrap_or(0.5 * std::f64::consts::PI);
-                let mut rows = Vec::new();
-                for (col, s) in h.sensors.iter().zip(&setup.sensors) {
-                    let peak = summarise(&h.t, col, Some(CUTOFF_HZ))
-                        .unwrap()
-                        .filtered
-                        .unwrap();
-                    let like = slamtool::validate::wedges::like_for_like_cp(
-                        run.beta,
-                        speed,
-                        s.s_m,
-                        s.width_m,
-                        setup.t_end,
-                        CUTOFF_HZ,
-                    )
-                    .unwrap();
-                    let t_ref = s.s_m * run.beta.sin() / (rise * speed);
-                    rows.push((
-                        peak.value / q / like,
-                        (peak.time - t_ref) * speed / setup.dp,
-                    ));
-                }
-                let t_wet = slamtool::validate::wedges::chine_wetting_time(run.beta, 0.25, speed);
+                let t_wet = wedges::chine_wetting_time(run.beta, 0.25, SPEED);
                 let f_sph = common::sph::window_mean(&h.t, &h.fz, 0.3 * t_wet, 0.6 * t_wet);
-                let k = slamtool::validate::wedges::mlm_force_coefficient(run.beta).unwrap();
+                let k = wedges::mlm_force_coefficient(run.beta).unwrap();
                 // F_MLM = k rho V^3 t is linear in t: its window mean is its value at mid-window.
-                let f_mlm = k * 1000.0 * speed.powi(3) * 0.45 * t_wet;
-                let mean = rows.iter().map(|r| r.0).sum::<f64>() / rows.len() as f64;
+                let f_mlm = k * 1000.0 * SPEED.powi(3) * 0.45 * t_wet;
+                let mean = peaks.iter().map(|p| p.ratio).sum::<f64>() / peaks.len() as f64;
                 eprintln!(
                     "{deg} deg, {n} particles, corrected {corrected}: sensor / reference {:.3?} (mean {mean:.3}), \
                      peak time - reference (dp/V) {:.2?}, F_SPH / F_MLM {:.3}",
-                    rows.iter().map(|r| r.0).collect::<Vec<_>>(),
-                    rows.iter().map(|r| r.1).collect::<Vec<_>>(),
+                    peaks.iter().map(|p| p.ratio).collect::<Vec<_>>(),
+                    peaks.iter().map(|p| p.late_dp).collect::<Vec<_>>(),
                     f_sph / f_mlm
                 );
             }

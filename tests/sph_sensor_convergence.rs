@@ -73,16 +73,10 @@ fn peak_errors(deadrise_deg: f64, n_half: f64, method: SensorMethod) -> PeakErro
     let beta = run.beta;
     let t_end = run.result.summary.setup.t_end;
     let similarity = deadrise_deg == zhao_faltinsen1993::DEADRISE_DEG;
-    let (cp_point, rise) = if similarity {
-        (
-            zhao_faltinsen1993::CP_MAX,
-            1.0 + zhao_faltinsen1993::Z_OVER_VT,
-        )
+    let cp_point = if similarity {
+        zhao_faltinsen1993::CP_MAX
     } else {
-        (
-            wagner::peak_pressure_coefficient(beta).unwrap(),
-            0.5 * std::f64::consts::PI,
-        )
+        wagner::peak_pressure_coefficient(beta).unwrap()
     };
     let h = &run.result.history;
     let sens = &run.result.summary.setup.sensors;
@@ -97,7 +91,7 @@ fn peak_errors(deadrise_deg: f64, n_half: f64, method: SensorMethod) -> PeakErro
         let (p, t) = filtered_peak(&h.t, col);
         let cp = p / q;
         let cp_like = like_for_like_cp(beta, run.speed, s.s_m, s.width_m, t_end);
-        let t_ref = s.s_m * beta.sin() / (rise * run.speed);
+        let t_ref = slamtool::validate::wedges::reference_peak_time(beta, run.speed, s.s_m);
         eprintln!(
             "  {deadrise_deg} deg, {n_half} particles, {method:?}, sensor at s = {:.3} m: Cp {cp:.2} at {:.2} ms; \
              reference {cp_point:.2} (like for like {cp_like:.2}) at {:.2} ms",

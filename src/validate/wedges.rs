@@ -122,6 +122,16 @@ pub fn like_for_like_cp(
     }
 }
 
+/// Time at which the reference pressure peak passes arc length `s` from the keel of a wedge of deadrise
+/// `beta` (rad) at constant speed `v`: the peak is at height (1 + z/Vt) V t above the keel, with z/Vt the
+/// similarity solution's 0.5087 at 20 deg (Zhao & Faltinsen 1993) and Wagner's pi/2 - 1 otherwise.
+pub fn reference_peak_time(beta: f64, v: f64, s: f64) -> f64 {
+    let rise = zhao_faltinsen1993::peak(beta.to_degrees())
+        .map(|(_, z_over_vt)| 1.0 + z_over_vt)
+        .unwrap_or(0.5 * PI);
+    s * beta.sin() / (rise * v)
+}
+
 /// Sensor peak errors of one run against the like-for-like reference: mean |Cp / Cp_ref - 1| and mean
 /// |t / t_ref - 1| of the peak time (the reference peak passes the sensor centre at height
 /// (1 + z/Vt) V t above the keel), with one table row and one (s, Cp) point per sensor.
@@ -136,12 +146,6 @@ struct SensorErrors {
 fn sensor_errors(case: &Case, deg: f64, n: f64, memo: &Memo) -> Result<(SensorErrors, WedgeRun)> {
     let run = wedge_run(case, deg, n, memo)?;
     let cutoff = case.number("filter_hz")?;
-    let similarity = (deg - zhao_faltinsen1993::DEADRISE_DEG).abs() < 1e-9;
-    let rise = if similarity {
-        1.0 + zhao_faltinsen1993::Z_OVER_VT
-    } else {
-        0.5 * PI
-    };
     let h = &run.result.history;
     let sens = &run.result.summary.setup.sensors;
     let t_end = run.result.summary.setup.t_end;
@@ -158,7 +162,7 @@ fn sensor_errors(case: &Case, deg: f64, n: f64, memo: &Memo) -> Result<(SensorEr
         let (p, t) = filtered_peak(&h.t, col, cutoff)?;
         let cp = p / q;
         let cp_ref = like_for_like_cp(run.beta, run.speed, s.s_m, s.width_m, t_end, cutoff)?;
-        let t_ref = s.s_m * run.beta.sin() / (rise * run.speed);
+        let t_ref = reference_peak_time(run.beta, run.speed, s.s_m);
         e.cp += (cp / cp_ref - 1.0).abs() / m;
         e.time += (t / t_ref - 1.0).abs() / m;
         e.rows.push(vec![
