@@ -32,9 +32,10 @@
 //! The uncorrected last 30 deg sensor at 40 particles (and the late peaks at 80) are the jet-root
 //! lift-off: a void trapped under the surface layer at the root once the penetration is about 8.5 dp
 //! (see the module documentation of `kernel_correction`). With the correction the root pressure no longer
-//! collapses and the peak times converge; the peak values at 80 particles are 10-20 % low at both angles
-//! (not understood yet; issue #9 item 5). The correction is not the default: the default interpolated
-//! sensors read the root peak 25 % low with it (see `slamtool::sph::kernel_correction`).
+//! collapses at 40 and 80 particles and the peak times come closer (at 160 they are late again); the peak
+//! values at 80 particles are 10-20 % low at both angles (the non-convergence measured above; issue #9
+//! item 5). The correction is not the default: the default interpolated sensors read the root peak 25 %
+//! low with it (see `slamtool::sph::kernel_correction`).
 
 mod common;
 
