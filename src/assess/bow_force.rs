@@ -57,8 +57,10 @@ pub struct StationForce {
     pub x_m: f64,
     /// Peak section force per metre (N/m; 0 where the keel stays in the water).
     pub section_force_peak_n_per_m: f64,
-    /// "sph", "analytic" or "no-emergence".
+    /// The design rule's source of the section force ([`super::design_rule`]) or "no-emergence".
     pub source: &'static str,
+    /// Convergence verdict of the SPH section force, where SPH ran.
+    pub verdict: Option<String>,
 }
 
 /// The coincident total at its instant.
@@ -81,7 +83,33 @@ pub struct BowForce {
     pub peak_sum_x_action_m: Option<f64>,
     /// From the analytic histories at one instant.
     pub time_coincident: Option<Coincident>,
+    /// The verdict of the total: converged where every station's SPH section force is shown converged
+    /// (converged or acceptable), otherwise which stations are not and what stands in for them.
+    pub verdict: String,
     pub note: Option<String>,
+}
+
+/// The verdict of a total over `stations` ([`BowForce::verdict`]).
+fn total_verdict(stations: &[StationForce]) -> String {
+    let slamming: Vec<&StationForce> = stations
+        .iter()
+        .filter(|s| s.section_force_peak_n_per_m > 0.0)
+        .collect();
+    let not: Vec<String> = slamming
+        .iter()
+        .filter(|s| !super::design_rule::shown_converged(s.verdict.as_deref()))
+        .map(|s| format!("{} ({})", s.station, s.source))
+        .collect();
+    if slamming.is_empty() {
+        "no slamming station".into()
+    } else if not.is_empty() {
+        "converged: every station's SPH section force is converged or acceptable".into()
+    } else {
+        format!(
+            "not shown converged at stations {}: their design forces are taken by the design rule",
+            not.join(", ")
+        )
+    }
 }
 
 /// Linear interpolation in a history [t, f], 0 outside it.
@@ -114,6 +142,7 @@ pub fn of_events(events: &[&EventResult], entry: &[Option<f64>], period: f64) ->
                 x_m: e.x_m,
                 section_force_peak_n_per_m: v,
                 source: src,
+                verdict: e.sph.as_ref().and_then(|s| s.force_convergence.clone()),
             }
         })
         .collect();
@@ -168,11 +197,12 @@ pub fn of_events(events: &[&EventResult], entry: &[Option<f64>], period: f64) ->
     Some(BowForce {
         speed_m_per_s: first.speed_m_per_s,
         wave: first.wave.clone(),
-        stations,
         peak_sum_total_n: peak.map(|p| p.0),
         peak_sum_x_action_m: peak.map(|p| p.1),
         time_coincident: best,
+        verdict: total_verdict(&stations),
         note,
+        stations,
     })
 }
 

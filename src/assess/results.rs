@@ -601,6 +601,7 @@ pub fn bow_force_csv(a: &Assessment) -> Result<String> {
         "time_coincident_total_n",
         "time_coincident_x_action_m",
         "time_coincident_time_s",
+        "verdict",
         "note",
     ]
     .iter()
@@ -619,6 +620,7 @@ pub fn bow_force_csv(a: &Assessment) -> Result<String> {
                 num(b.time_coincident.as_ref().map(|c| c.total_n)),
                 num(b.time_coincident.as_ref().map(|c| c.x_action_m)),
                 num(b.time_coincident.as_ref().map(|c| c.time_s)),
+                b.verdict.clone(),
                 b.note.clone().unwrap_or_default(),
             ]
         })

@@ -221,3 +221,12 @@ impl Saved {
 pub fn at(e: &Value, station: f64) -> bool {
     num(e, "station").is_some_and(|s| (s - station).abs() < 1e-9)
 }
+
+/// A speed (m/s) as printed: at most three decimals, trailing zeros dropped ("10.289", "2.2"), "-" for
+/// none.
+pub fn speed_text(v: Option<f64>) -> String {
+    v.map_or("-".into(), |x| {
+        let s = format!("{x:.3}");
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    })
+}

@@ -3,7 +3,7 @@
 use serde_json::Value;
 
 use super::Report;
-use super::data::{Saved, at, list, num, text};
+use super::data::{Saved, list, num, speed_text, text};
 use crate::report::document::Block;
 
 pub fn kpa(v: Option<f64>) -> String {
@@ -33,7 +33,7 @@ pub fn title(r: &mut Report, saved: &Saved, stamp: Option<String>) {
     r.doc.title = format!("Slamming assessment: {}", text(s, "hull"));
     r.doc.footer = format!("{} · {}", text(s, "hull"), text(s, "tool"));
     r.doc.stamp = stamp;
-    let sp: Vec<String> = speeds(saved).iter().map(|v| format!("{v}")).collect();
+    let sp: Vec<String> = speeds(saved).iter().map(|v| speed_text(Some(*v))).collect();
     r.doc.subtitle = vec![
         "2D+t method (Veen 2010): strip theory, relative motion, 2D water entry per station"
             .to_string(),
@@ -233,7 +233,7 @@ pub fn warnings(saved: &Saved) -> Vec<(String, Vec<String>)> {
         let label = (
             format!("{}", num(e, "station").unwrap_or(f64::NAN)),
             text(e, "wave").to_string(),
-            format!("{}", num(e, "speed_m_per_s").unwrap_or(f64::NAN)),
+            speed_text(num(e, "speed_m_per_s")),
         );
         if let Some(f) = e["failed"].as_str() {
             add(format!("failed run: {f}"), Some(label.clone()));
@@ -313,48 +313,11 @@ pub fn warnings(saved: &Saved) -> Vec<(String, Vec<String>)> {
 pub fn summary(r: &mut Report, saved: &Saved) {
     r.heading(1, "Summary");
     let s = &saved.summary;
-    let mut rows = Vec::new();
-    for st in saved.stations() {
-        let f = num(st, "station").unwrap_or(f64::NAN);
-        for d in list(st, "design_pressure_pa") {
-            let sensor = text(d, "name");
-            let ev = saved.events().iter().find(|e| {
-                at(e, f)
-                    && num(e, "speed_m_per_s") == num(d, "speed_m_per_s")
-                    && text(e, "wave") == text(d, "wave")
-            });
-            rows.push(vec![
-                format!("{f}"),
-                sensor.to_string(),
-                kpa(num(d, "value")),
-                text(d, "source").to_string(),
-                format!("{}", num(d, "speed_m_per_s").unwrap_or(f64::NAN)),
-                text(d, "wave").to_string(),
-                ev.map(|e| verdict(e, sensor)).unwrap_or_default(),
-            ]);
-        }
-    }
     r.para(&format!(
-        "Design pressure per station and sensor: the largest peak over the events ({}). Ochi's slam \
-         threshold velocity is {:.3} m/s.",
-        text(&s["settings"], "design_value"),
+        "The design pressure of every panel, with its uncertainty, hydrostatic part, source, verdict and \
+         governing event, is on the sign-off page. Ochi's slam threshold velocity is {:.3} m/s.",
         num(s, "slam_threshold_velocity_m_per_s").unwrap_or(f64::NAN)
     ));
-    r.push(Block::Table {
-        caption: "Design pressure per station and sensor, with the governing event".into(),
-        header: [
-            "station",
-            "sensor",
-            "design kPa",
-            "source",
-            "speed m/s",
-            "wave",
-            "convergence",
-        ]
-        .map(String::from)
-        .to_vec(),
-        rows,
-    });
     let rows: Vec<Vec<String>> = saved
         .stations()
         .iter()
@@ -370,7 +333,7 @@ pub fn summary(r: &mut Report, saved: &Saved) {
                 ),
                 num(fp, "value").map_or("-".into(), |v| format!("{v:.1}")),
                 text(fp, "source").to_string(),
-                num(fp, "speed_m_per_s").map_or("-".into(), |v| format!("{v}")),
+                speed_text(num(fp, "speed_m_per_s")),
                 text(fp, "wave").to_string(),
             ]
         })

@@ -5,7 +5,7 @@
 use serde_json::Value;
 
 use super::Report;
-use super::data::{Run, Saved, at, list, num, text};
+use super::data::{Run, Saved, at, list, num, speed_text, text};
 use super::motions::slug;
 use crate::report::document::Block;
 use crate::report::figure::{Figure, Mark, Series};
@@ -161,7 +161,7 @@ pub fn section(r: &mut Report, saved: &Saved) {
                  flow of the earlier cycle are neglected) and time is counted from that start, not from a keel \
                  entry. The undisturbed water reaches the first panel above the still-water line at {} m/s, \
                  {} s after the start.",
-                num(e, "speed_m_per_s").unwrap_or(f64::NAN),
+                speed_text(num(e, "speed_m_per_s")),
                 text(e, "wave"),
                 text(e, "entry_kind"),
                 num(&e["flare_event"], "impact_velocity_m_per_s")
@@ -171,7 +171,7 @@ pub fn section(r: &mut Report, saved: &Saved) {
             )),
             None => r.para(&format!(
                 "Governing event: {} m/s in wave {}, entry velocity {:.3} m/s ({}).",
-                num(e, "speed_m_per_s").unwrap_or(f64::NAN),
+                speed_text(num(e, "speed_m_per_s")),
                 text(e, "wave"),
                 num(e, "entry_velocity_m_per_s").unwrap_or(f64::NAN),
                 text(e, "slam_flag").replace('-', " ")

@@ -5,7 +5,7 @@
 use serde_json::Value;
 
 use super::Report;
-use super::data::{Saved, list, num, text};
+use super::data::{Saved, list, num, speed_text, text};
 use crate::report::document::Block;
 use crate::report::figure::{Figure, Mark, RefLine, Series};
 
@@ -27,7 +27,7 @@ fn rao_figure(m: &Value, id: &str, title: &str, y_label: &str, key: &str) -> Fig
         f.series.push(Series::new(
             format!(
                 "U = {} m/s (Fn {:.3})",
-                num(sp, "speed_m_per_s").unwrap_or(f64::NAN),
+                speed_text(num(sp, "speed_m_per_s")),
                 num(sp, "froude_number").unwrap_or(f64::NAN)
             ),
             pts,

@@ -7,7 +7,7 @@
 use serde_json::Value;
 
 use super::Report;
-use super::data::{Saved, list, num, text};
+use super::data::{Saved, list, num, speed_text, text};
 use crate::report::document::Block;
 
 fn fmt(v: Option<f64>, scale: f64, digits: usize) -> String {
@@ -31,6 +31,9 @@ fn flags(d: &Value) -> Vec<&'static str> {
         Some("not_crossed") | Some("after_record") => f.push("no SPH impact in the run"),
         _ => {}
     }
+    if !f.is_empty() {
+        return f;
+    }
     match d["verdict"].as_str() {
         Some("not_converged") => f.push("SPH not converged"),
         Some("mismatched") => f.push("SPH levels show different events"),
@@ -41,14 +44,6 @@ fn flags(d: &Value) -> Vec<&'static str> {
         f.push("analytic value governs");
     }
     f
-}
-
-/// A speed as printed: at most three decimals, trailing zeros dropped.
-pub fn speed(v: Option<f64>) -> String {
-    v.map_or("-".into(), |x| {
-        let s = format!("{x:.3}");
-        s.trim_end_matches('0').trim_end_matches('.').to_string()
-    })
 }
 
 pub fn page(r: &mut Report, saved: &Saved) {
@@ -83,7 +78,7 @@ pub fn page(r: &mut Report, saved: &Saved) {
                 fmt(num(d, "hydrostatic"), 1e-3, 2),
                 text(d, "source").to_string(),
                 verdict_words(d),
-                speed(num(d, "speed_m_per_s")),
+                speed_text(num(d, "speed_m_per_s")),
             ]);
             detail.push(vec![
                 text(d, "name").to_string(),
@@ -92,7 +87,7 @@ pub fn page(r: &mut Report, saved: &Saved) {
                 fmt(num(d, "rise_time_s"), 1e3, 2),
                 fmt(num(d, "impulse"), 1.0, 2),
                 fmt(num(d, "particles_across_wetted"), 1.0, 1),
-                fmt(num(d, "acoustic_bound"), 1e-3, 0),
+                fmt(num(d, "acoustic_bound").filter(|&b| b > 0.0), 1e-3, 0),
             ]);
             let fl = flags(d);
             if !fl.is_empty() {
@@ -154,7 +149,7 @@ pub fn page(r: &mut Report, saved: &Saved) {
                     fmt(num(d, "hydrostatic"), 1.0, 0),
                     text(d, "source").to_string(),
                     verdict_words(d),
-                    speed(num(d, "speed_m_per_s")),
+                    speed_text(num(d, "speed_m_per_s")),
                 ]
             })
         })
@@ -190,20 +185,22 @@ pub fn page(r: &mut Report, saved: &Saved) {
         Some(b) => r.para(&format!(
             "Total bow slamming force, largest over the events: {:.1} N (upper bound, sum of the stations' \
              design section forces) at {} m/s in {}, point of action {:.3} m from midship; at one instant \
-             {} N. It carries the verdicts of the section forces above.",
+             {} N. Verdict: {}.",
             num(b, "peak_sum_total_n").unwrap_or(f64::NAN),
-            speed(num(b, "speed_m_per_s")),
+            speed_text(num(b, "speed_m_per_s")),
             text(b, "wave"),
             num(b, "peak_sum_x_action_m").unwrap_or(f64::NAN),
-            fmt(num(&b["time_coincident"], "total_n"), 1.0, 1)
+            fmt(num(&b["time_coincident"], "total_n"), 1.0, 1),
+            text(b, "verdict")
         )),
         None => r.para("Total bow slamming force: no station slams, or fewer than two stations."),
     }
     r.heading(2, "Validity flags");
     let mut items = flagged;
     items.push(
-        "2D+t: each station is a 2D water entry; three-dimensional relief of the flow along the hull is \
-         not modelled (conservative away from the stem, where the 2D assumption holds least)."
+        "2D+t: each station is a 2D water entry; the three-dimensional relief of the flow along the hull \
+         is not modelled, which generally over-predicts the loads, and least accurately near the stem, \
+         where the flow along the hull matters most."
             .into(),
     );
     items.push(

@@ -6,7 +6,7 @@
 use serde_json::Value;
 
 use super::Report;
-use super::data::{Saved, at, list, num, text};
+use super::data::{Saved, at, list, num, speed_text, text};
 use super::front::kpa;
 use crate::report::document::Block;
 use crate::report::figure::{Figure, Mark, Series};
@@ -114,7 +114,7 @@ pub fn design_space(r: &mut Report, saved: &Saved) {
                 &format!("peak_pressure_along_girth_{f}"),
                 &format!(
                     "Peak pressure along the girth, station {f}, {} m/s, {}",
-                    num(e, "speed_m_per_s").unwrap_or(f64::NAN),
+                    speed_text(num(e, "speed_m_per_s")),
                     text(e, "wave")
                 ),
                 "girth from the keel (m)",
@@ -262,7 +262,7 @@ pub fn appendix(r: &mut Report, saved: &Saved) {
         for n in saved.sensors_at(f) {
             rows.push(vec![
                 format!("{f}"),
-                format!("{}", num(e, "speed_m_per_s").unwrap_or(f64::NAN)),
+                speed_text(num(e, "speed_m_per_s")),
                 text(e, "wave").to_string(),
                 entry_kind(e),
                 n.clone(),
@@ -301,7 +301,7 @@ pub fn appendix(r: &mut Report, saved: &Saved) {
                     let g = |k: &str| num(st, k).map_or("-".into(), |v| format!("{v:.4}"));
                     rows.push(vec![
                         format!("{}", num(st, "station").unwrap_or(f64::NAN)),
-                        format!("{}", num(sp, "speed_m_per_s").unwrap_or(f64::NAN)),
+                        speed_text(num(sp, "speed_m_per_s")),
                         text(w, "wave").to_string(),
                         g("relative_motion_amplitude_m"),
                         g("relative_velocity_amplitude_m_per_s"),
@@ -340,7 +340,7 @@ pub fn appendix(r: &mut Report, saved: &Saved) {
         let g = |v: Option<f64>, d: usize| v.map_or("-".into(), |x| format!("{x:.d$}"));
         rows.push(vec![
             format!("{}", num(e, "station").unwrap_or(f64::NAN)),
-            format!("{}", num(e, "speed_m_per_s").unwrap_or(f64::NAN)),
+            speed_text(num(e, "speed_m_per_s")),
             text(e, "wave").to_string(),
             g(num(s, "dp_m").map(|x| x * 1e3), 3),
             g(num(s, "c0_m_per_s"), 2),
