@@ -283,6 +283,19 @@ fn buoyancy_note(d0: f64, case: &plan::EntryCase, t_peak: f64, rho: f64) -> Stri
     )
 }
 
+/// Whether the analytic estimate stopping early matters to the design: a sensor of the event has no
+/// analytic peak (the models stopped before reaching it).
+fn stop_matters(e: &Event, a: &analytic::Estimate) -> bool {
+    e.entry.as_ref().is_some_and(|c| {
+        c.sensors.iter().any(|q| {
+            a.sensors
+                .iter()
+                .find(|s| s.name == q.name)
+                .is_none_or(|s| s.peak_pa <= 0.0)
+        })
+    })
+}
+
 /// The events that get an SPH run: every emerging one (`sph`), the governing one of each station by the
 /// analytic estimate (`screen`), or none (`analytic`).
 fn sph_events(plan: &Plan, estimates: &[Option<analytic::Estimate>], f: Fidelity) -> Vec<usize> {
@@ -420,14 +433,28 @@ pub fn run(
                 if let Some(why) = &r.stopped_early {
                     warnings.push(format!("the SPH run stopped early: {why}"));
                 }
-                warnings.extend(r.warnings.iter().cloned());
+                // the run's Wagner notes repeat the analytic estimate's (in `analytic.notes`)
+                warnings.extend(
+                    r.warnings
+                        .iter()
+                        .filter(|w| !w.starts_with("Wagner estimate:"))
+                        .cloned(),
+                );
                 (Some(r), None)
             }
             Some(Err(err)) => (None, Some(format!("SPH run failed: {err}"))),
             None => (None, None),
         };
+        // The analytic estimate's notes (where the models stop, the acoustic stage of a flat keel) stay
+        // in `analytic.notes`: they explain the model, and ask nothing of the reader; the stop before the
+        // end of the entry does, where a sensor lies beyond it.
         if let Some(a) = &estimates[i] {
-            warnings.extend(a.notes.iter().map(|n| format!("analytic: {n}")));
+            warnings.extend(
+                a.notes
+                    .iter()
+                    .filter(|n| n.starts_with("Wagner estimate stops early") && stop_matters(e, a))
+                    .map(|n| format!("analytic: {n}")),
+            );
         }
         if let Some(r) = &sph {
             warnings.extend(results::sensor_warnings(r, estimates[i].as_ref()));

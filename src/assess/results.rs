@@ -65,6 +65,13 @@ pub struct SphSensor {
 }
 
 impl SphSensor {
+    /// The largest SPH value when it lies in the immersion phase (after the impact window) and exceeds
+    /// `design`: a load the panel carries that is not its slamming pressure.
+    pub fn later_load(&self, design: f64) -> Option<f64> {
+        (self.largest_phase == Some(Phase::Immersion) && self.raw_peak_pa > design)
+            .then_some(self.raw_peak_pa)
+    }
+
     /// What the design rule needs of this sensor.
     pub fn quantity(&self) -> SphQuantity<'_> {
         SphQuantity {
@@ -154,6 +161,30 @@ pub fn sensor_warnings(r: &SphRecord, analytic: Option<&Estimate>) -> Vec<String
              compute, and air cushions it in reality; their design values are the analytic estimates, with \
              the water-hammer pressure rho c_w V as the upper bound",
             acoustic.join(", ")
+        ));
+    }
+    let later: Vec<String> = r
+        .sensors
+        .iter()
+        .filter_map(|q| {
+            let design = decide(Some(q.quantity()), mlm(&q.name))?.value;
+            let load = q.later_load(design)?;
+            Some(format!(
+                "{} ({:.2} kPa at {:.3} s, design {:.2} kPa)",
+                q.name,
+                load * 1e-3,
+                q.peak_time_s,
+                design * 1e-3
+            ))
+        })
+        .collect();
+    if !later.is_empty() {
+        out.push(format!(
+            "sensors {}: the largest SPH pressure comes after the impact, in the immersion phase (the \
+             added-mass and hydrostatic load of the deepening section, or a later impact higher up felt \
+             across the wetted contour), above the design slamming value: it is not a slamming pressure of \
+             the panel, but a load the panel carries; check it as a load case of its own",
+            later.join(", ")
         ));
     }
     let late = group(ImpactStatus::AfterRecord);
@@ -300,6 +331,9 @@ pub struct DesignValue {
     pub rise_time_s: Option<f64>,
     /// Particles across the analytic wetted half-width when the contact crosses the sensor.
     pub particles_across_wetted: Option<f64>,
+    /// The largest SPH value of the governing event where it comes after the impact (immersion phase) and
+    /// exceeds the design value ([`SphSensor::later_load`]).
+    pub later_load: Option<f64>,
 }
 
 impl DesignValue {
@@ -359,6 +393,7 @@ impl DesignValue {
             impulse: q.and_then(|q| q.slamming_impulse_pa_s),
             rise_time_s: q.and_then(|q| q.rise_time_s),
             particles_across_wetted: q.and_then(|q| q.particles_across_wetted),
+            later_load: q.and_then(|q| q.later_load(d.value)),
         }
     }
 }

@@ -2,6 +2,7 @@
 //! the bow slamming force, and the comparisons with published results.
 
 use slamtool::assess::Assessment;
+use slamtool::report::assessment::data::speed_text;
 
 fn kpa(v: Option<f64>) -> String {
     v.map_or("-".into(), |p| format!("{:.2}", p / 1e3))
@@ -58,7 +59,9 @@ pub fn tables(a: &Assessment) -> String {
         if let Some(f) = &st.section_force_peak_n_per_m {
             s += &format!(
                 "; section force {:.1} N/m ({}, {} m/s)",
-                f.value, f.source, f.speed_m_per_s
+                f.value,
+                f.source,
+                speed_text(Some(f.speed_m_per_s))
             );
         }
         s += "\n";
@@ -68,7 +71,7 @@ pub fn tables(a: &Assessment) -> String {
                 d.name,
                 d.value / 1e3,
                 d.source,
-                d.speed_m_per_s,
+                speed_text(Some(d.speed_m_per_s)),
                 d.wave
             );
         }

@@ -134,10 +134,12 @@ pub fn air_cushion_warning(aft_of_fp: f64, points: &[[f64; 2]]) -> Option<String
     let widest = points.iter().map(|p| p[0]).fold(0.0, f64::max);
     (flat > 0.0 && flat >= 0.05 * widest).then(|| {
         format!(
-            "station {aft_of_fp} Lpp has a flat keel (half-width {flat:.4} m): air trapped between the flat \
-             bottom and the water cushions the impact, which neither the single-phase SPH nor the analytic \
-             models represent, so its pressures are over-predicted (Veen 2010 s. 6.3: SPH about twice Ochi's \
-             measured peaks at his flat section)"
+            "station {aft_of_fp} Lpp has a flat keel (half-width {flat:.4} m): its bottom impact is \
+             acoustic, which single-phase SPH with an artificial sound speed does not compute, so the design \
+             values of the panels on the flat are the analytic estimates with the water-hammer pressure \
+             rho c_w V as their upper bound; air trapped under the flat bottom cushions the real impact, \
+             which no model here represents, so these values are upper estimates (Veen 2010 s. 6.3: \
+             single-phase SPH read about twice Ochi's measured peaks at his flat section)"
         )
     })
 }

@@ -23,25 +23,39 @@ fn verdict_words(d: &Value) -> String {
 }
 
 /// The validity flags of one design value: what a signer must know about it.
-fn flags(d: &Value) -> Vec<&'static str> {
-    let mut f = Vec::new();
+fn flags(d: &Value) -> Vec<String> {
+    let mut f: Vec<String> = Vec::new();
+    if let Some(l) = num(d, "later_load") {
+        f.push(format!(
+            "a larger load after the impact, in the immersion phase ({:.2} kPa): not a slamming pressure, \
+             check it as a load case of its own",
+            l / 1e3
+        ));
+    }
+    let mut g = flags_of_source(d);
+    f.append(&mut g);
+    f
+}
+
+fn flags_of_source(d: &Value) -> Vec<String> {
+    let mut f: Vec<String> = Vec::new();
     match d["impact"].as_str() {
-        Some("acoustic") => f.push("flat keel: acoustic impact, air cushion not modelled"),
-        Some("in_transient") => f.push("impact not resolved by SPH at this spacing"),
-        Some("not_crossed") | Some("after_record") => f.push("no SPH impact in the run"),
+        Some("acoustic") => f.push("flat keel: acoustic impact, air cushion not modelled".into()),
+        Some("in_transient") => f.push("impact not resolved by SPH at this spacing".into()),
+        Some("not_crossed") | Some("after_record") => f.push("no SPH impact in the run".into()),
         _ => {}
     }
     if !f.is_empty() {
         return f;
     }
     match d["verdict"].as_str() {
-        Some("not_converged") => f.push("SPH not converged"),
-        Some("mismatched") => f.push("SPH levels show different events"),
-        Some("not_assessed") => f.push("SPH convergence not assessed"),
+        Some("not_converged") => f.push("SPH not converged".into()),
+        Some("mismatched") => f.push("SPH levels show different events".into()),
+        Some("not_assessed") => f.push("SPH convergence not assessed".into()),
         _ => {}
     }
     if text(d, "source").starts_with("analytic") && d["sph"].is_number() {
-        f.push("analytic value governs");
+        f.push("analytic value governs".into());
     }
     f
 }
