@@ -146,7 +146,10 @@ mod tests {
         );
         let c = tree(&[("src/sph/a.rs", "x")]);
         let err = source_hash(c.path(), SOLVER).unwrap_err().to_string();
-        assert!(err.contains("peaks.rs") && err.contains("not found"), "{err}");
+        assert!(
+            err.contains("peaks.rs") && err.contains("not found"),
+            "{err}"
+        );
     }
 
     #[test]

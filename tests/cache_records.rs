@@ -56,10 +56,7 @@ fn a_tampered_record_is_recomputed_and_the_assessment_says_so() {
     // The section force's peak, written as serde_json writes it, multiplied by 100.
     let value = format!("\"force_peak_n_per_m\": {}", rec.force_peak_n_per_m);
     assert!(text.contains(&value), "{value} in {text}");
-    let forged = format!(
-        "\"force_peak_n_per_m\": {}",
-        rec.force_peak_n_per_m * 100.0
-    );
+    let forged = format!("\"force_peak_n_per_m\": {}", rec.force_peak_n_per_m * 100.0);
     std::fs::write(&file, text.replace(&value, &forged)).unwrap();
 
     let notes = Notes::default();
@@ -100,7 +97,12 @@ fn a_tampered_record_is_recomputed_and_the_assessment_says_so() {
     )
     .unwrap();
     assert!(
-        !notes.0.lock().unwrap().iter().any(|n| n.contains("checksum")),
+        !notes
+            .0
+            .lock()
+            .unwrap()
+            .iter()
+            .any(|n| n.contains("checksum")),
         "{:?}",
         notes.0.lock().unwrap()
     );

@@ -266,8 +266,16 @@ mod tests {
         let setup = serde_json::json!({"section": [[0.0, 0.0], [0.1, 0.05]], "c0": 40.0});
         let study = StudyPlan::default();
         let a = key_with(&setup, &study, "aaaa").unwrap();
-        assert_eq!(a, key_with(&setup, &study, "aaaa").unwrap(), "deterministic");
-        assert_ne!(a, key_with(&setup, &study, "aaab").unwrap(), "solver sources");
+        assert_eq!(
+            a,
+            key_with(&setup, &study, "aaaa").unwrap(),
+            "deterministic"
+        );
+        assert_ne!(
+            a,
+            key_with(&setup, &study, "aaab").unwrap(),
+            "solver sources"
+        );
         let other = serde_json::json!({"section": [[0.0, 0.0], [0.1, 0.05]], "c0": 41.0});
         assert_ne!(a, key_with(&other, &study, "aaaa").unwrap(), "setup");
         assert_eq!(a.len(), 64);
@@ -275,10 +283,14 @@ mod tests {
 
     #[test]
     fn a_record_is_reused_only_while_its_checksum_holds() {
-        let record = serde_json::json!({"key": "k", "force_peak_n_per_m": 3300.5, "sensors": [1.25e3]});
+        let record =
+            serde_json::json!({"key": "k", "force_peak_n_per_m": 3300.5, "sensors": [1.25e3]});
         let text = stored_text(&record).unwrap();
         let head: serde_json::Value = serde_json::from_str(&text).unwrap();
-        assert_eq!(head["record"], record, "event.json is JSON holding the record");
+        assert_eq!(
+            head["record"], record,
+            "event.json is JSON holding the record"
+        );
         assert_eq!(verify::<serde_json::Value>(&text), Ok(record.clone()));
         // A well-formed number changed by hand.
         let tampered = text.replace("3300.5", "330050.0");
@@ -293,9 +305,15 @@ mod tests {
         std::fs::create_dir_all(entry(out.path(), "k")).unwrap();
         std::fs::write(entry(out.path(), "k").join(RECORD), &tampered).unwrap();
         let note = rejection(out.path(), "k").unwrap();
-        assert!(note.contains("event.json") && note.contains("computed again"), "{note}");
+        assert!(
+            note.contains("event.json") && note.contains("computed again"),
+            "{note}"
+        );
         assert!(lookup(out.path(), "k").is_none());
-        assert!(rejection(out.path(), "none").is_none(), "a missing entry is no rejection");
+        assert!(
+            rejection(out.path(), "none").is_none(),
+            "a missing entry is no rejection"
+        );
     }
 
     #[test]

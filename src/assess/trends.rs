@@ -278,9 +278,12 @@ impl SpeedTrend {
 /// keel first.
 #[derive(Debug, Clone, Default)]
 pub struct ForeTrend {
-    /// (station, [(sensor, peak Pa, source)] from the keel up).
-    pub rows: Vec<(f64, Vec<(String, f64, &'static str)>)>,
+    /// (station, its sensor peaks from the keel up).
+    pub rows: Vec<(f64, Vec<SensorPeak>)>,
 }
+
+/// A sensor's name, its peak (Pa) and the peak's source.
+pub type SensorPeak = (String, f64, &'static str);
 
 /// The speed of Ochi's finding on the foremost sections (m/s).
 pub const FORE_SPEED: f64 = 2.2;
@@ -297,7 +300,7 @@ impl ForeTrend {
                 .iter()
                 .filter(|e| same(e.station, st.station) && same(e.speed_m_per_s, FORE_SPEED))
                 .collect();
-            let peaks: Vec<(String, f64, &'static str)> = by_girth(st)
+            let peaks: Vec<SensorPeak> = by_girth(st)
                 .iter()
                 .filter_map(|n| sensor_peak(&evs, n).map(|(p, src)| (n.to_string(), p, src)))
                 .collect();
@@ -308,7 +311,7 @@ impl ForeTrend {
         ForeTrend { rows }
     }
 
-    fn falls(peaks: &[(String, f64, &'static str)]) -> bool {
+    fn falls(peaks: &[SensorPeak]) -> bool {
         peaks.windows(2).all(|w| w[1].1 <= w[0].1)
     }
 
@@ -325,7 +328,7 @@ impl ForeTrend {
         }
     }
 
-    fn row_text(r: &(f64, Vec<(String, f64, &'static str)>)) -> String {
+    fn row_text(r: &(f64, Vec<SensorPeak>)) -> String {
         format!(
             "station {}: {} kPa",
             r.0,
@@ -484,7 +487,8 @@ mod tests {
 
     #[test]
     fn the_keel_trend_needs_every_station_on_its_keel_sensor() {
-        let row = |f: f64, best: &str, keel: &str| (f, best.to_string(), 3e3, "sph", keel.to_string());
+        let row =
+            |f: f64, best: &str, keel: &str| (f, best.to_string(), 3e3, "sph", keel.to_string());
         let all = KeelTrend {
             rows: vec![row(0.093, "S1", "S1"), row(0.133, "T1", "T1")],
         };
@@ -501,20 +505,30 @@ mod tests {
 
     #[test]
     fn the_fore_trend_needs_peaks_falling_from_the_keel_up() {
-        let peaks = |v: &[f64]| -> Vec<(String, f64, &'static str)> {
+        let peaks = |v: &[f64]| -> Vec<SensorPeak> {
             v.iter()
                 .enumerate()
                 .map(|(i, p)| (format!("S{}", i + 1), *p, "analytic"))
                 .collect()
         };
         let falls = ForeTrend {
-            rows: vec![(0.093, peaks(&[4.0, 3.0, 2.0])), (0.133, peaks(&[5.0, 5.0, 1.0]))],
+            rows: vec![
+                (0.093, peaks(&[4.0, 3.0, 2.0])),
+                (0.133, peaks(&[5.0, 5.0, 1.0])),
+            ],
         };
         assert_eq!(falls.found(), Found::Reproduced);
         let rises = ForeTrend {
-            rows: vec![(0.093, peaks(&[2.4, 3.2, 3.6])), (0.133, peaks(&[5.0, 1.0]))],
+            rows: vec![
+                (0.093, peaks(&[2.4, 3.2, 3.6])),
+                (0.133, peaks(&[5.0, 1.0])),
+            ],
         };
         assert_eq!(rises.fraction(), Some(0.5));
-        assert!(rises.rising().starts_with("station 0.093"), "{}", rises.rising());
+        assert!(
+            rises.rising().starts_with("station 0.093"),
+            "{}",
+            rises.rising()
+        );
     }
 }

@@ -47,16 +47,18 @@ pub fn of(case: &Case) -> Vec<(String, String)> {
         ];
     }
     match case.kind.as_str() {
-        "whelan2004-peak-pressure" | "yettou2006-momentum-models" | "breder2005-load-ratio" => vec![
-            (
-                "water density".into(),
-                format!("{WATER_DENSITY} kg/m³ (fresh water)"),
-            ),
-            (
-                "scale".into(),
-                "2D section at the dimensions of the experiment, not scaled".into(),
-            ),
-        ],
+        "whelan2004-peak-pressure" | "yettou2006-momentum-models" | "breder2005-load-ratio" => {
+            vec![
+                (
+                    "water density".into(),
+                    format!("{WATER_DENSITY} kg/m³ (fresh water)"),
+                ),
+                (
+                    "scale".into(),
+                    "2D section at the dimensions of the experiment, not scaled".into(),
+                ),
+            ]
+        }
         k if k.starts_with("wedge-") || k.starts_with("zhao1996") || k.starts_with("yettou") => {
             vec![
                 (

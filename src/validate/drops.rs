@@ -1,8 +1,8 @@
 //! Wedge drop tests: Zhao, Faltinsen & Aarsnes (1996) 30 deg wedge with the measured velocity imposed
 //! and in free drop, and Yettou, Desrochers & Champoux (2006) 25 deg free drop.
 
-use super::run::{Memo, csv_rows};
 use super::conditions::WATER_DENSITY;
+use super::run::{Memo, csv_rows};
 use super::{Case, Figure, Mode, Outcome, Reference, Series, Table};
 use crate::analytic::wagner;
 use crate::error::{Error, Result};
@@ -172,7 +172,15 @@ fn drop_against(
         .map(|r| [r[0], r[1]])
         .collect();
     let t: Vec<f64> = rows.iter().map(|r| r[0] * 1e-3).collect();
-    let w = wagner::free_drop_speed(deadrise_deg.to_radians(), WATER_DENSITY, mass, v0, 9.81, &t, 1e-6)?;
+    let w = wagner::free_drop_speed(
+        deadrise_deg.to_radians(),
+        WATER_DENSITY,
+        mass,
+        v0,
+        9.81,
+        &t,
+        1e-6,
+    )?;
     let mut worst = (0.0f64, 0.0);
     let mut table = Vec::new();
     for (row, vw) in rows.iter().zip(&w) {

@@ -6,9 +6,9 @@
 //!
 //! [`Outcome::facts`]: super::Outcome::facts
 
+use super::Case;
 use super::compare::{Reference, Verdict, error_text, tolerance_text, trim};
 use super::report::reference_text;
-use super::Case;
 
 /// The byte offset and text of the first literal number in `template` outside its placeholders: a digit
 /// that does not continue or start a word (`2D`, `S093`, `cot^2` are words; `10 deg`, `0.15` are not).
@@ -88,9 +88,15 @@ pub fn text(
     let unit = case.unit.as_str();
     let mut all = vec![
         ("computed".to_string(), format!("{} {unit}", trim(computed))),
-        ("reference".to_string(), reference_text(Some(reference), unit)),
+        (
+            "reference".to_string(),
+            reference_text(Some(reference), unit),
+        ),
         ("error".to_string(), error_text(error, case.tolerance, unit)),
-        ("tolerance".to_string(), tolerance_text(case.tolerance, unit)),
+        (
+            "tolerance".to_string(),
+            tolerance_text(case.tolerance, unit),
+        ),
     ];
     all.extend(facts.iter().cloned());
     let body = explain(template, &all).map_err(|e| format!("{}: {e}", case.path.display()))?;

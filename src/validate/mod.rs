@@ -153,10 +153,9 @@ pub fn run_case(case: &Case, mode: Mode, memo: &run::Memo) -> CaseResult {
             .replace("\\", "/")
     };
     let mut notes = case.notes.clone();
-    let mut known_failure = case
-        .known_failure
-        .as_ref()
-        .map(|_| "(the known-failure text quotes the run's numbers: the computation failed)".into());
+    let mut known_failure = case.known_failure.as_ref().map(|_| {
+        "(the known-failure text quotes the run's numbers: the computation failed)".into()
+    });
     let (computed, reference, error, mut verdict, table, figures) = match outcome {
         Ok(o) => {
             notes.extend(o.notes);

@@ -5,9 +5,9 @@
 use std::f64::consts::PI;
 use std::sync::Arc;
 
+use super::conditions::WATER_DENSITY;
 use super::drops::window_mean;
 use super::run::Memo;
-use super::conditions::WATER_DENSITY;
 use super::{Case, Figure, Mode, Outcome, Reference, Series, Table};
 use crate::analytic::logvinovich_mlm::Mlm;
 use crate::analytic::wagner_pressure::WagnerWedge;
