@@ -106,7 +106,7 @@ fn a_parameter_of_the_wrong_type_is_located_when_the_case_runs() {
     let r = validate::run_case(&case, Mode::Quick, &Default::default());
     assert_eq!(r.verdict, Verdict::Error);
     assert!(
-        r.notes.iter().any(|n| n.contains("case.toml:14:27:")),
+        r.notes.iter().any(|n| n.contains("case.toml:15:27:")),
         "{:?}",
         r.notes
     );
