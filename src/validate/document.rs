@@ -1,12 +1,12 @@
 //! The validation report as a document ([`crate::report::document`]), typeset to `validation.pdf`.
 //!
-//! Front page: the tally of verdicts (pass, pass of a known failure, known failure, pending data, fail,
-//! error), then one table, one row per case (quantity, computed, reference, error, tolerance, verdict).
+//! Front page: the tally of verdicts under the title (pass, pass of a known failure, known failure,
+//! pending data, fail, error, zeros included), then one table, one row per case (quantity, computed, reference, error, tolerance, verdict).
 //! Then one section per case: verdict, numbers, tolerance and its reason, known failure or pending data,
 //! provenance, notes, wall time, the table of numbers and the overlay plots.
 
 use super::compare::Reference;
-use super::report::{case_inputs, mode_text, summary_row, summary_rows, tally, tally_text};
+use super::report::{case_inputs, mode_text, summary_row, summary_rows, tally_text};
 use super::{Suite, plot};
 use crate::error::Result;
 use crate::report::document::{Block, Document};
@@ -23,12 +23,7 @@ pub struct Outline {
 /// The outline of the report of a suite; `commit` is the tool's git commit.
 pub fn outline(s: &Suite, commit: &str) -> Result<Outline> {
     let mode = mode_text(s.mode);
-    let mut blocks = vec![Block::KeyValue(
-        tally(s)
-            .into_iter()
-            .map(|(l, n)| (l.to_string(), n.to_string()))
-            .collect(),
-    )];
+    let mut blocks = vec![];
     blocks.push(Block::Table {
         caption: "Validation summary: one row per case".into(),
         header: [

@@ -74,8 +74,8 @@ pub fn explain(template: &str, facts: &[(String, String)]) -> Result<String, Str
 }
 
 /// The known-failure text of a run: the comparison (computed, reference, tolerance, error, all from the
-/// run) and the case file's `template` filled with the run's `facts`. A run within the tolerance says so
-/// first: the mark should be revisited.
+/// run) and the case file's `template` filled with the run's `facts`. A run within the tolerance says
+/// only that (the template, still checked, explains a failure this run does not show).
 pub fn text(
     template: &str,
     facts: &[(String, String)],
@@ -102,11 +102,14 @@ pub fn text(
     let body = explain(template, &all).map_err(|e| format!("{}: {e}", case.path.display()))?;
     let [c, r, e, t] = [0, 1, 2, 3].map(|k| all[k].1.clone());
     Ok(match verdict {
+        // The explanation is of a failure this run does not show: not printed as if it did.
         Verdict::UnexpectedPass => format!(
-            "within the tolerance in this run ({c} against {r}, tolerance {t}): the mark should be \
-             revisited. As a failure it reads: {body}"
+            "computed {c} against {r} (tolerance {t}): within the tolerance in this run, although the \
+             case file marks a known failure (seen in other runs or modes); the mark should be revisited"
         ),
-        _ => format!("{c} against {r}, outside the tolerance {t} (error {e}). {body}"),
+        _ => format!(
+            "computed {c} against {r} (tolerance {t}, error {e}): outside the tolerance. {body}"
+        ),
     })
 }
 
