@@ -100,7 +100,10 @@ fn verify<T: serde::de::DeserializeOwned>(text: &str) -> std::result::Result<T, 
         return Err(format!(
             "its content does not match its checksum (sha256 {}…, stored {}…): it was edited or damaged",
             &got[..12],
-            want.get(..12).unwrap_or(want)
+            want.chars()
+                .take(12)
+                .filter(char::is_ascii_hexdigit)
+                .collect::<String>()
         ));
     }
     serde_json::from_str(body).map_err(|e| format!("its record cannot be read ({e})"))

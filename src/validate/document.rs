@@ -1,7 +1,8 @@
 //! The validation report as a document ([`crate::report::document`]), typeset to `validation.pdf`.
 //!
 //! Front page: the tally of verdicts under the title (pass, pass of a known failure, known failure,
-//! pending data, fail, error, zeros included), then one table, one row per case (quantity, computed, reference, error, tolerance, verdict).
+//! pending data, fail, error, zeros included), then one table, one row per case (quantity, computed,
+//! reference, error, tolerance, verdict).
 //! Then one section per case: verdict, numbers, tolerance and its reason, known failure or pending data,
 //! provenance, notes, wall time, the table of numbers and the overlay plots.
 
@@ -23,8 +24,7 @@ pub struct Outline {
 /// The outline of the report of a suite; `commit` is the tool's git commit.
 pub fn outline(s: &Suite, commit: &str) -> Result<Outline> {
     let mode = mode_text(s.mode);
-    let mut blocks = vec![];
-    blocks.push(Block::Table {
+    let mut blocks = vec![Block::Table {
         caption: "Validation summary: one row per case".into(),
         header: [
             "case: quantity",
@@ -49,7 +49,7 @@ pub fn outline(s: &Suite, commit: &str) -> Result<Outline> {
                 ]
             })
             .collect(),
-    });
+    }];
     let failed: Vec<&str> = s
         .cases
         .iter()
