@@ -14,7 +14,7 @@ use crate::error::{Error, Result};
 use crate::loads::peaks::peak;
 use crate::sph::MotionSpec;
 
-/// Water density of the estimates (kg/m3), as the SPH runs use by default.
+/// Fresh-water density (kg/m3), the SPH runs' default; an assessment uses its loading's density.
 pub const RHO: f64 = 1000.0;
 
 /// One sensor's analytic peak.
@@ -146,11 +146,16 @@ fn densify(t: &[f64], v: &[f64], tc: &[f64], c: &[f64], dc: f64) -> (Vec<f64>, V
     (ts, vs)
 }
 
-/// Estimate an event's force and sensor pressures.
+/// Estimate an event's force and sensor pressures in fresh water ([`RHO`]).
 pub fn estimate(case: &EntryCase) -> Result<Estimate> {
+    estimate_in(case, RHO)
+}
+
+/// Estimate an event's force and sensor pressures in water of density `rho` (kg/m3).
+pub fn estimate_in(case: &EntryCase, rho: f64) -> Result<Estimate> {
     let (t0, v0) = samples(&case.motion)?;
     let d0 = case.immersion_m;
-    let first = generalised_wagner::estimate_immersed(&case.half_points, d0, &t0, &v0, RHO)?;
+    let first = generalised_wagner::estimate_immersed(&case.half_points, d0, &t0, &v0, rho)?;
     let narrowest = case
         .sensors
         .iter()
@@ -167,14 +172,14 @@ pub fn estimate(case: &EntryCase) -> Result<Estimate> {
     } else {
         (t0, v0)
     };
-    let w = generalised_wagner::estimate_immersed(&case.half_points, d0, &t, &v, RHO)?;
+    let w = generalised_wagner::estimate_immersed(&case.half_points, d0, &t, &v, rho)?;
     // Peaks of the models' own values: samples at the acoustic limit are the water-hammer bound.
     let (force_peak, force_time) = w.force_peak().unwrap_or((0.0, 0.0));
     let mut notes = w.notes.clone();
     if let Some(why) = &w.stopped {
         notes.push(format!("Wagner estimate stops early: {why}"));
     }
-    let mlm = Mlm::new_immersed(&case.half_points, d0, &t, &v, RHO)?;
+    let mlm = Mlm::new_immersed(&case.half_points, d0, &t, &v, rho)?;
     let times = mlm.times();
     let acoustic = mlm.acoustic();
     if d0 > 0.0 {

@@ -13,8 +13,10 @@
 //! * `peak_sum`: f is each station's peak section force, whenever it occurs. The peaks of different
 //!   stations do not occur together, so this is an upper bound of the total force.
 //! * `time_coincident`: the largest over time of ∫ f(x, t) dx, with each station's generalised Wagner force
-//!   history placed at its keel-entry instant within the encounter period. It uses the analytic histories
-//!   (the SPH histories are in the run folders), and is the total a hull girder feels at one instant.
+//!   history placed at its keel-entry instant within the encounter period and scaled to the station's
+//!   design section force (f(x, t) = F_W(t) f_design / max F_W), so that the shape in time is Wagner's and
+//!   the level the design value's. It is the total a hull girder feels at one instant, and never exceeds
+//!   `peak_sum`, whose integrand is the largest of each f(x, t).
 
 use serde::Serialize;
 
@@ -27,7 +29,8 @@ station only (no extrapolation), f = 0 where the keel stays in the water; point 
 of x f dx / F (m from midship, positive forward). peak_sum: f = each station's peak section force (SPH \
 where run, else generalised Wagner), an upper bound because the peaks are not simultaneous; \
 time_coincident: the largest over time of the integral of the generalised Wagner force histories placed at \
-each station's keel-entry instant";
+each station's keel-entry instant, each scaled to its station's design section force (so that it never \
+exceeds peak_sum)";
 
 /// F and x_F of f over x (x in any order; pairs sorted by x). None with fewer than two stations or no
 /// force.
@@ -120,6 +123,17 @@ pub fn of_events(events: &[&EventResult], entry: &[Option<f64>], period: f64) ->
         .map(|s| s.section_force_peak_n_per_m)
         .collect();
     let peak = integrate(&xs, &fs);
+    // each analytic history scaled to its station's design force
+    let scale: Vec<f64> = events
+        .iter()
+        .zip(&fs)
+        .map(|(e, &f)| {
+            let top = e.analytic.as_ref().map_or(0.0, |a| {
+                a.force_history.iter().map(|p| p[1]).fold(0.0, f64::max)
+            });
+            if top > 0.0 { f / top } else { 0.0 }
+        })
+        .collect();
     let mut best: Option<Coincident> = None;
     if xs.len() >= 2 && period > 0.0 {
         for k in 0..SAMPLES {
@@ -127,8 +141,9 @@ pub fn of_events(events: &[&EventResult], entry: &[Option<f64>], period: f64) ->
             let f: Vec<f64> = events
                 .iter()
                 .zip(entry)
-                .map(|(e, te)| match (e.analytic.as_ref(), te) {
-                    (Some(a), Some(te)) => at(&a.force_history, (t - te).rem_euclid(period)),
+                .zip(&scale)
+                .map(|((e, te), k)| match (e.analytic.as_ref(), te) {
+                    (Some(a), Some(te)) => k * at(&a.force_history, (t - te).rem_euclid(period)),
                     _ => 0.0,
                 })
                 .collect();

@@ -14,6 +14,7 @@ use super::plan::{self, Event, Fidelity, Plan, Settings};
 use super::results::{self, Assessment, EventResult, SphRecord, SphSensor};
 use crate::error::{Error, Result};
 use crate::hull::Hull;
+use crate::loads::anatomy::ImpactStatus;
 use crate::loads::cutoff;
 use crate::progress::ProgressHandle;
 use crate::provenance::Provenance;
@@ -21,12 +22,21 @@ use crate::sea::SeaState;
 use crate::sph::body::Section;
 use crate::sph::{self, RunOptions, RunSummary, StudyPlan};
 
+/// The convergence of the peak called `name` in a run's convergence report.
+fn convergence_of<'a>(
+    s: &'a RunSummary,
+    name: &str,
+) -> Option<&'a crate::loads::convergence::PeakConvergence> {
+    s.convergence
+        .as_ref()?
+        .peaks
+        .iter()
+        .find(|p| p.name == name)
+}
+
 /// The verdict and statement of the peak called `name` in a run's convergence report.
 fn verdict(s: &RunSummary, name: &str) -> (Option<String>, Option<String>) {
-    let Some(c) = &s.convergence else {
-        return (None, None);
-    };
-    match c.peaks.iter().find(|p| p.name == name) {
+    match convergence_of(s, name) {
         Some(p) => (
             serde_json::to_value(p.verdict)
                 .ok()
@@ -46,6 +56,9 @@ fn record(key: &str, s: &RunSummary) -> SphRecord {
         .and_then(|m| m.build().ok())
         .map_or(0.0, |m| m.max_speed(s.t_end_s));
     let dry_below = results::DRY_FRACTION * 0.5 * s.setup.rho0 * v_max * v_max;
+    let gci = |name: &str| convergence_of(s, name).and_then(|p| p.gci);
+    let fa = s.force.anatomy.as_ref();
+    let (force_convergence, force_statement) = verdict(s, "section force raw");
     SphRecord {
         key: key.to_string(),
         dp_m: s.dp_m,
@@ -58,12 +71,23 @@ fn record(key: &str, s: &RunSummary) -> SphRecord {
             .cloned(),
         force_peak_n_per_m: s.force.summary.raw.value,
         force_peak_time_s: s.force.summary.raw.time,
-        force_convergence: verdict(s, "section force raw").0,
+        force_convergence,
+        force_slamming_peak_n_per_m: fa.and_then(|a| a.slamming_peak.map(|p| p.value)),
+        force_slamming_time_s: fa.and_then(|a| a.slamming_peak.map(|p| p.time)),
+        force_hydrostatic_n_per_m: fa.and_then(|a| a.hydrostatic_at_peak),
+        force_gci: gci("section force raw"),
+        force_convergence_statement: force_statement,
         sensors: s
             .sensors
             .iter()
             .map(|q| {
-                let (c, st) = verdict(s, &format!("sensor {} raw", q.name));
+                let name = format!("sensor {} raw", q.name);
+                let (c, st) = verdict(s, &name);
+                let a = q.anatomy.as_ref();
+                let slam = a.and_then(|a| a.slamming_peak);
+                // wetted: the slamming peak (or, without an anatomy, the largest value) reaches a
+                // slamming pressure
+                let reached = slam.map_or(q.summary.raw.value, |p| p.value);
                 SphSensor {
                     name: q.name.clone(),
                     raw_peak_pa: q.summary.raw.value,
@@ -72,8 +96,20 @@ fn record(key: &str, s: &RunSummary) -> SphRecord {
                     impulse_pa_s: q.summary.raw.impulse,
                     convergence: c,
                     convergence_statement: st,
-                    wetted: q.summary.raw.value >= dry_below,
+                    wetted: reached >= dry_below
+                        || a.is_some_and(|a| a.status != ImpactStatus::Resolved),
                     still_rising: q.summary.at_record_end,
+                    impact: a.map(|a| a.status),
+                    impact_window_s: a.and_then(|a| a.window.map(|w| [w.start_s, w.end_s])),
+                    slamming_peak_pa: slam.map(|p| p.value),
+                    slamming_peak_time_s: slam.map(|p| p.time),
+                    slamming_impulse_pa_s: slam.map(|p| p.impulse),
+                    rise_time_s: a.and_then(|a| a.rise_time_s),
+                    hydrostatic_pa: a.and_then(|a| a.hydrostatic_at_peak),
+                    largest_phase: a.map(|a| a.largest_phase),
+                    gci: gci(&name),
+                    particles_across_wetted: a
+                        .and_then(|a| a.crossing_half_width_m.map(|c| c / s.dp_m)),
                 }
             })
             .collect(),
@@ -82,6 +118,11 @@ fn record(key: &str, s: &RunSummary) -> SphRecord {
     }
 }
 
+/// The sensor method of an assessment's SPH runs unless `--sensor-method` says otherwise: the force
+/// panel, the method whose wedge pressures the validation suite measures (every wedge pressure case of
+/// `validate` uses it), so that the design rests on what is validated.
+pub const DESIGN_SENSOR_METHOD: sph::SensorMethod = sph::SensorMethod::ForcePanel;
+
 /// The SPH setup of an event: the section, its v(t) and sensors, the automatic choices of the solver
 /// (resolution, tank, sound speed, end time) and the physical low-pass cut-off of its sensor records
 /// ([`cutoff::slamming_cutoff`]) unless the overrides give one.
@@ -89,6 +130,7 @@ fn event_setup(
     e: &Event,
     overrides: &sph::Overrides,
     study: StudyPlan,
+    rho: f64,
 ) -> Result<sph::case::Setup> {
     let case = e
         .entry
@@ -106,6 +148,8 @@ fn event_setup(
         case.sensors.clone(),
         &overrides,
     )?;
+    setup.rho0 = rho;
+    setup.sensor_method = overrides.sensor_method.unwrap_or(DESIGN_SENSOR_METHOD);
     if setup.filter_cutoff_hz.is_none() {
         let (t, v) = analytic::samples(&case.motion)?;
         let coarsest = setup.nominal_sample_hz() / study.ratio.powi(study.levels as i32 - 1);
@@ -211,7 +255,7 @@ fn cost_of(jobs: &[Job], study: StudyPlan, threads: usize) -> Cost {
 /// section immersed at the start (rho g A, A the immersed area at the keel depth, from the hull
 /// section), which the analytic (Wagner) force leaves out; its value at the start and at the SPH force
 /// peak (keel depth d0 + integral of V).
-fn buoyancy_note(d0: f64, case: &plan::EntryCase, t_peak: f64) -> String {
+fn buoyancy_note(d0: f64, case: &plan::EntryCase, t_peak: f64, rho: f64) -> String {
     let sec = crate::hull::Section::new(case.half_points.clone());
     let table = match &case.motion {
         sph::MotionSpec::Prescribed { table } => table.as_slice(),
@@ -227,7 +271,7 @@ fn buoyancy_note(d0: f64, case: &plan::EntryCase, t_peak: f64) -> String {
         let vb = a[1] + (b[1] - a[1]) * (tb - a[0]) / (b[0] - a[0]).max(f64::MIN_POSITIVE);
         depth += 0.5 * (a[1] + vb) * (tb - a[0]);
     }
-    let rho_g = analytic::RHO * 9.81;
+    let rho_g = rho * 9.81;
     let at = |d: f64| rho_g * sec.properties(sec.keel_z() + d).area;
     format!(
         "flare event: the SPH section force includes the hydrostatic buoyancy of the immersed section, rho g A \
@@ -281,7 +325,7 @@ pub fn run(
     let computed: Vec<Option<Result<analytic::Estimate>>> = plan
         .events
         .par_iter()
-        .map(|e| e.entry.as_ref().map(analytic::estimate))
+        .map(|e| e.entry.as_ref().map(|c| analytic::estimate_in(c, plan.rho)))
         .collect();
     let analytic_errors: Vec<Option<String>> = computed
         .iter()
@@ -297,7 +341,7 @@ pub fn run(
     let jobs: Vec<Job> = sph_events(&plan, &estimates, s.fidelity)
         .into_par_iter()
         .map(|i| {
-            let setup = event_setup(&plan.events[i], &s.overrides, s.study)
+            let setup = event_setup(&plan.events[i], &s.overrides, s.study, plan.rho)
                 .and_then(|st| cache::key(&st, &s.study).map(|k| (st, k)));
             let cached = match &setup {
                 Ok((_, k)) if s.use_cache => cache::lookup(out, k),
@@ -397,7 +441,12 @@ pub fn run(
             warnings.extend(results::sensor_warnings(r, estimates[i].as_ref()));
         }
         if let (Some(f), Some(r), Some(case)) = (&e.flare, &sph, &e.entry) {
-            warnings.push(buoyancy_note(f.immersion_m, case, r.force_peak_time_s));
+            warnings.push(buoyancy_note(
+                f.immersion_m,
+                case,
+                r.force_peak_time_s,
+                plan.rho,
+            ));
         }
         events.push(EventResult {
             station: e.station,
@@ -455,6 +504,7 @@ pub fn run(
     }
     let settings = serde_json::json!({
         "loading": plan.loading,
+        "water_density_kg_m3": plan.rho,
         "stations": plan.stations,
         "speeds_m_per_s": plan.speeds,
         "fidelity": s.fidelity.name(),
@@ -469,12 +519,14 @@ pub fn run(
             .overrides
             .divergence_correction
             .unwrap_or(crate::sph::case::DEFAULT_DIVERGENCE_CORRECTION),
-        "sensor_method": s.overrides.sensor_method.unwrap_or_default(),
+        "sensor_method": s.overrides.sensor_method.unwrap_or(DESIGN_SENSOR_METHOD),
         "convergence_levels": s.study.levels,
         "convergence_ratio": s.study.ratio,
         "strips": s.strips,
-        "design_value": "per sensor and station, the largest SPH raw peak over the events with an SPH run at \
-                         that station, or the largest analytic (MLM) peak where none has one",
+        "design_value": "per sensor and station, the largest design value over the events with an SPH run at \
+                         that station (all events where none has one); per event: SPH slamming peak + its GCI \
+                         uncertainty where converged, else the larger of that and the analytic (MLM) peak, \
+                         or the analytic peak where SPH does not resolve the impact (src/assess/design_rule.rs)",
     });
     let mut inputs = hull.input_files();
     inputs.push(sea.source.as_path());

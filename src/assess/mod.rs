@@ -23,6 +23,7 @@ pub mod bow_force;
 pub mod cache;
 pub mod comparisons;
 pub mod design_event;
+pub mod design_rule;
 pub mod execute;
 pub mod limits;
 pub mod plan;

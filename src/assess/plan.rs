@@ -211,6 +211,8 @@ impl Plan {
 #[derive(Debug, Clone)]
 pub struct Plan {
     pub loading: String,
+    /// Water density of the loading (kg/m3), used by the analytic estimates and the SPH runs.
+    pub rho: f64,
     /// Stations assessed (fractions of Lpp aft of the FP).
     pub stations: Vec<f64>,
     pub speeds: Vec<f64>,
@@ -362,6 +364,7 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
         sensors,
         events,
         warnings,
+        rho: loading.rho,
     })
 }
 

@@ -8,8 +8,10 @@ use std::path::{Path, PathBuf};
 use serde::{Deserialize, Serialize};
 
 use super::analytic::Estimate;
+use super::design_rule::{Decision, SphQuantity, decide};
 use crate::error::{Error, Result};
 use crate::files::write_text_atomic;
+use crate::loads::anatomy::{ImpactStatus, Phase};
 use crate::provenance::{Provenance, TOOL, tidy_numbers};
 use crate::report::sanity::SlamFlag;
 
@@ -34,6 +36,49 @@ pub struct SphSensor {
     /// ended.
     #[serde(default)]
     pub still_rising: bool,
+    /// The record's anatomy ([`crate::loads::anatomy`]): whether SPH resolves the impact, its window,
+    /// the slamming peak (the largest value in the window; `raw_peak_pa` is the largest after the contact
+    /// transient, whatever its phase), its hydrostatic part, rise time and impulse.
+    #[serde(default)]
+    pub impact: Option<ImpactStatus>,
+    #[serde(default)]
+    pub impact_window_s: Option<[f64; 2]>,
+    #[serde(default)]
+    pub slamming_peak_pa: Option<f64>,
+    #[serde(default)]
+    pub slamming_peak_time_s: Option<f64>,
+    #[serde(default)]
+    pub slamming_impulse_pa_s: Option<f64>,
+    #[serde(default)]
+    pub rise_time_s: Option<f64>,
+    #[serde(default)]
+    pub hydrostatic_pa: Option<f64>,
+    /// The phase of the largest value after the transient (`raw_peak_pa`).
+    #[serde(default)]
+    pub largest_phase: Option<Phase>,
+    /// GCI of the slamming peak (fraction), from the matched levels.
+    #[serde(default)]
+    pub gci: Option<f64>,
+    /// Particles across the analytic wetted half-width when the contact crosses the sensor.
+    #[serde(default)]
+    pub particles_across_wetted: Option<f64>,
+}
+
+impl SphSensor {
+    /// What the design rule needs of this sensor.
+    pub fn quantity(&self) -> SphQuantity<'_> {
+        SphQuantity {
+            status: self.impact,
+            slamming: if self.impact.is_some() {
+                self.slamming_peak_pa
+            } else {
+                Some(self.raw_peak_pa)
+            },
+            gci: self.gci,
+            verdict: self.convergence.as_deref(),
+            wetted: self.wetted,
+        }
+    }
 }
 
 fn yes() -> bool {
@@ -50,24 +95,29 @@ pub const DRY_FRACTION: f64 = 0.05;
 /// The design-value `source` of a sensor the SPH run did not wet, whose value is the analytic one.
 pub const DRY_SOURCE: &str = "analytic (dry in SPH)";
 
-/// The warnings an SPH run's sensors raise in an assessment: a sensor the SPH water did not reach
-/// (with the analytic value that stands in for it), and a peak still rising when the run ended.
+/// The warnings an SPH run's sensors raise in an assessment, only what a reader must act on: a sensor
+/// the SPH water did not reach (with the analytic value that stands in for it), and the sensors whose
+/// impact SPH does not compute at this spacing (grouped by the reason), whose design values are the
+/// analytic ones.
 pub fn sensor_warnings(r: &SphRecord, analytic: Option<&Estimate>) -> Vec<String> {
     let mut out = Vec::new();
+    let mlm = |name: &str| {
+        analytic
+            .and_then(|a| a.sensors.iter().find(|s| s.name == name))
+            .map(|s| s.peak_pa)
+    };
     for q in &r.sensors {
         if !q.wetted {
-            let a = analytic
-                .and_then(|a| a.sensors.iter().find(|s| s.name == q.name))
-                .map_or_else(
-                    || "no analytic estimate either".to_string(),
-                    |s| {
-                        format!(
-                            "its design value is the analytic (MLM) peak, {:.2} kPa, which assumes the flow \
-                             stays attached and is therefore the conservative value",
-                            s.peak_pa * 1e-3
-                        )
-                    },
-                );
+            let a = mlm(&q.name).map_or_else(
+                || "no analytic estimate either".to_string(),
+                |p| {
+                    format!(
+                        "its design value is the analytic (MLM) peak, {:.2} kPa, which assumes the flow \
+                         stays attached and is therefore the conservative value",
+                        p * 1e-3
+                    )
+                },
+            );
             out.push(format!(
                 "sensor {}: the SPH water did not reach it with a slamming pressure within the run (raw peak \
                  {:.3} kPa, below {DRY_FRACTION} x 1/2 rho V^2): the flow separated from the contour below \
@@ -75,16 +125,44 @@ pub fn sensor_warnings(r: &SphRecord, analytic: Option<&Estimate>) -> Vec<String
                 q.name,
                 q.raw_peak_pa * 1e-3
             ));
-        } else if q.still_rising {
-            out.push(format!(
-                "sensor {}: the SPH pressure was still rising when the run ended (raw peak {:.3} kPa at \
-                 {:.4} s, the last sample): the impact peak may come later, or the load is the growing \
-                 hydrostatic pressure of the deepening immersion",
-                q.name,
-                q.raw_peak_pa * 1e-3,
-                q.peak_time_s
-            ));
         }
+    }
+    let group = |status: ImpactStatus| -> Vec<&str> {
+        r.sensors
+            .iter()
+            .filter(|q| q.wetted && q.impact == Some(status))
+            .map(|q| q.name.as_str())
+            .collect()
+    };
+    let transient = group(ImpactStatus::InTransient);
+    if !transient.is_empty() {
+        out.push(format!(
+            "sensors {}: the analytic contact crosses them within the SPH contact transient (the keel less \
+             than {} particle spacings deep, dp {:.2} mm), so SPH does not resolve their impact at this \
+             spacing; their design values are the analytic (MLM) estimates. A finer spacing near the keel \
+             would resolve them",
+            transient.join(", "),
+            crate::sph::CONTACT_TRANSIENT_DP,
+            r.dp_m * 1e3
+        ));
+    }
+    let acoustic = group(ImpactStatus::Acoustic);
+    if !acoustic.is_empty() {
+        out.push(format!(
+            "sensors {}: the contact crosses them at an acoustic speed (flat or nearly flat keel): the impact \
+             is a water-hammer pressure that single-phase SPH with an artificial sound speed does not \
+             compute, and air cushions it in reality; their design values are the analytic estimates, with \
+             the water-hammer pressure rho c_w V as the upper bound",
+            acoustic.join(", ")
+        ));
+    }
+    let late = group(ImpactStatus::AfterRecord);
+    if !late.is_empty() {
+        out.push(format!(
+            "sensors {}: their impact window lies at or after the end of the SPH run; their design values \
+             are the analytic estimates (a longer run would compute them)",
+            late.join(", ")
+        ));
     }
     out
 }
@@ -104,6 +182,18 @@ pub struct SphRecord {
     pub force_peak_n_per_m: f64,
     pub force_peak_time_s: f64,
     pub force_convergence: Option<String>,
+    /// The section force's slamming peak (its largest value up to Wagner's full wetting, widened; see
+    /// [`crate::sph::phases`]), its time, hydrostatic part (buoyancy) and GCI.
+    #[serde(default)]
+    pub force_slamming_peak_n_per_m: Option<f64>,
+    #[serde(default)]
+    pub force_slamming_time_s: Option<f64>,
+    #[serde(default)]
+    pub force_hydrostatic_n_per_m: Option<f64>,
+    #[serde(default)]
+    pub force_gci: Option<f64>,
+    #[serde(default)]
+    pub force_convergence_statement: Option<String>,
     pub sensors: Vec<SphSensor>,
     pub stopped_early: Option<String>,
     pub warnings: Vec<String>,
@@ -142,31 +232,44 @@ pub struct EventResult {
 }
 
 impl EventResult {
-    /// The section force peak used for design (N/m): SPH where run, otherwise analytic.
+    /// The section force design decision ([`super::design_rule`]).
+    pub fn force_design(&self) -> Option<Decision> {
+        let q = self.sph.as_ref().map(|s| SphQuantity {
+            status: s
+                .force_slamming_peak_n_per_m
+                .map(|_| ImpactStatus::Resolved),
+            slamming: s.force_slamming_peak_n_per_m.or(Some(s.force_peak_n_per_m)),
+            gci: s.force_gci,
+            verdict: s.force_convergence.as_deref(),
+            wetted: true,
+        });
+        decide(q, self.analytic.as_ref().map(|a| a.force_peak_n_per_m))
+    }
+
+    /// The section force peak used for design (N/m) and its source ([`super::design_rule`]).
     pub fn force_peak(&self) -> Option<(f64, &'static str)> {
-        match (&self.sph, &self.analytic) {
-            (Some(s), _) => Some((s.force_peak_n_per_m, "sph")),
-            (None, Some(a)) => Some((a.force_peak_n_per_m, "analytic")),
-            _ => None,
+        self.force_design().map(|d| (d.value, d.source))
+    }
+
+    /// A sensor's design decision ([`super::design_rule`]): none when neither SPH nor the analytic
+    /// estimate has the sensor.
+    pub fn sensor_design(&self, name: &str) -> Option<Decision> {
+        let analytic = self
+            .analytic
+            .as_ref()
+            .and_then(|a| a.sensors.iter().find(|q| q.name == name).map(|q| q.peak_pa));
+        match &self.sph {
+            Some(s) => {
+                let q = s.sensors.iter().find(|q| q.name == name)?;
+                decide(Some(q.quantity()), analytic)
+            }
+            None => decide(None, analytic),
         }
     }
 
-    /// A sensor's peak used for design (Pa): the SPH raw peak where run, otherwise (no run, or a sensor
-    /// the run did not wet) the analytic one.
+    /// A sensor's design value (Pa) for this event and its source ([`super::design_rule`]).
     pub fn sensor_peak(&self, name: &str) -> Option<(f64, &'static str)> {
-        let analytic = || {
-            self.analytic
-                .as_ref()
-                .and_then(|a| a.sensors.iter().find(|q| q.name == name).map(|q| q.peak_pa))
-        };
-        if let Some(s) = &self.sph {
-            let q = s.sensors.iter().find(|q| q.name == name)?;
-            if q.wetted {
-                return Some((q.raw_peak_pa, "sph"));
-            }
-            return analytic().map(|v| (v, DRY_SOURCE));
-        }
-        analytic().map(|v| (v, "analytic"))
+        self.sensor_design(name).map(|d| (d.value, d.source))
     }
 }
 
@@ -180,6 +283,84 @@ pub struct DesignValue {
     pub source: &'static str,
     pub speed_m_per_s: f64,
     pub wave: String,
+    /// The SPH slamming peak of the governing event (total), its discretisation uncertainty U = GCI P
+    /// and convergence verdict; the analytic estimate of the same sensor and event; the hydrostatic part
+    /// at the time of the SPH peak; the water-hammer upper bound of a flat keel.
+    pub sph: Option<f64>,
+    pub uncertainty: Option<f64>,
+    pub verdict: Option<String>,
+    pub analytic: Option<f64>,
+    pub hydrostatic: Option<f64>,
+    pub acoustic_bound: Option<f64>,
+    /// Whether SPH resolves the impact ([`crate::loads::anatomy::ImpactStatus`]).
+    pub impact: Option<ImpactStatus>,
+    /// Time of the SPH slamming peak (s), its impulse over the impact window and rise time.
+    pub peak_time_s: Option<f64>,
+    pub impulse: Option<f64>,
+    pub rise_time_s: Option<f64>,
+    /// Particles across the analytic wetted half-width when the contact crosses the sensor.
+    pub particles_across_wetted: Option<f64>,
+}
+
+impl DesignValue {
+    /// The design value of `name` in event `e` from its decision `d`, with the details beside it.
+    fn of(name: &str, e: &EventResult, d: Decision) -> Self {
+        let q = e
+            .sph
+            .as_ref()
+            .and_then(|s| s.sensors.iter().find(|q| q.name == name));
+        let an = e
+            .analytic
+            .as_ref()
+            .and_then(|a| a.sensors.iter().find(|q| q.name == name));
+        let force = name == "section force";
+        let sph = e.sph.as_ref();
+        DesignValue {
+            name: name.to_string(),
+            value: d.value,
+            source: d.source,
+            speed_m_per_s: e.speed_m_per_s,
+            wave: e.wave.clone(),
+            sph: if force {
+                sph.and_then(|s| s.force_slamming_peak_n_per_m)
+            } else {
+                q.and_then(|q| q.slamming_peak_pa)
+            },
+            uncertainty: d.uncertainty,
+            verdict: if force {
+                sph.and_then(|s| s.force_convergence.clone())
+            } else {
+                q.and_then(|q| q.convergence.clone())
+            },
+            analytic: if force {
+                e.analytic.as_ref().map(|a| a.force_peak_n_per_m)
+            } else {
+                an.map(|a| a.peak_pa)
+            },
+            hydrostatic: if force {
+                sph.and_then(|s| s.force_hydrostatic_n_per_m)
+            } else {
+                q.and_then(|q| q.hydrostatic_pa)
+            },
+            acoustic_bound: an.and_then(|a| a.acoustic_bound_pa),
+            impact: if force {
+                sph.and_then(|s| {
+                    s.force_slamming_peak_n_per_m
+                        .map(|_| ImpactStatus::Resolved)
+                })
+            } else {
+                q.and_then(|q| q.impact)
+            },
+            peak_time_s: if force {
+                sph.and_then(|s| s.force_slamming_time_s)
+            } else {
+                q.and_then(|q| q.slamming_peak_time_s)
+            },
+            impulse: q.and_then(|q| q.slamming_impulse_pa_s),
+            rise_time_s: q.and_then(|q| q.rise_time_s),
+            particles_across_wetted: q.and_then(|q| q.particles_across_wetted),
+        }
+    }
 }
 
 /// Where a sensor is on its station's contour.
@@ -267,19 +448,13 @@ pub fn stations(events: &[EventResult], at: &[(f64, f64)]) -> Vec<StationResult>
                     }
                 }
             }
-            let best = |get: &dyn Fn(&EventResult) -> Option<(f64, &'static str)>, name: &str| {
+            let best = |get: &dyn Fn(&EventResult) -> Option<Decision>, name: &str| {
                 let mut out: Option<DesignValue> = None;
                 for e in here {
-                    if let Some((v, src)) = get(e)
-                        && out.as_ref().is_none_or(|b| v > b.value)
+                    if let Some(d) = get(e)
+                        && out.as_ref().is_none_or(|b| d.value > b.value)
                     {
-                        out = Some(DesignValue {
-                            name: name.to_string(),
-                            value: v,
-                            source: src,
-                            speed_m_per_s: e.speed_m_per_s,
-                            wave: e.wave.clone(),
-                        });
+                        out = Some(DesignValue::of(name, e, d));
                     }
                 }
                 out
@@ -291,10 +466,10 @@ pub fn stations(events: &[EventResult], at: &[(f64, f64)]) -> Vec<StationResult>
                 sensors: Vec::new(),
                 design_pressure_pa: names
                     .iter()
-                    .filter_map(|n| best(&|e: &EventResult| e.sensor_peak(n), n))
+                    .filter_map(|n| best(&|e: &EventResult| e.sensor_design(n), n))
                     .collect(),
                 section_force_peak_n_per_m: best(
-                    &|e: &EventResult| e.force_peak(),
+                    &|e: &EventResult| e.force_design(),
                     "section force",
                 ),
                 slamming_events: all.iter().filter(|e| e.slam_flag == SlamFlag::Slam).count(),
@@ -330,11 +505,19 @@ pub fn pressures_csv(a: &Assessment, sensors_of: &dyn Fn(f64) -> Vec<String>) ->
         "sph_peak_time_s",
         "sph_impulse_pa_s",
         "sph_convergence",
+        "sph_impact",
+        "sph_slamming_peak_pa",
+        "sph_slamming_peak_time_s",
+        "sph_hydrostatic_at_peak_pa",
+        "sph_gci",
+        "particles_across_wetted_half_width",
         "analytic_peak_pa",
         "analytic_peak_time_s",
         "analytic_impulse_pa_s",
         "sph_section_force_peak_n_per_m",
         "analytic_section_force_peak_n_per_m",
+        "event_design_value_pa",
+        "event_design_source",
         "failed",
         "design_event_definition",
     ]
@@ -360,6 +543,7 @@ pub fn pressures_csv(a: &Assessment, sensors_of: &dyn Fn(f64) -> Vec<String>) ->
                 .analytic
                 .as_ref()
                 .and_then(|r| r.sensors.iter().find(|q| q.name == n));
+            let design = e.sensor_design(&n);
             rows.push(vec![
                 crate::report::csv_number(e.station),
                 crate::report::csv_number(e.x_m),
@@ -379,11 +563,22 @@ pub fn pressures_csv(a: &Assessment, sensors_of: &dyn Fn(f64) -> Vec<String>) ->
                 num(s.map(|q| q.peak_time_s)),
                 num(s.map(|q| q.impulse_pa_s)),
                 s.and_then(|q| q.convergence.clone()).unwrap_or_default(),
+                s.and_then(|q| q.impact)
+                    .and_then(|i| serde_json::to_value(i).ok())
+                    .and_then(|v| v.as_str().map(str::to_string))
+                    .unwrap_or_default(),
+                num(s.and_then(|q| q.slamming_peak_pa)),
+                num(s.and_then(|q| q.slamming_peak_time_s)),
+                num(s.and_then(|q| q.hydrostatic_pa)),
+                num(s.and_then(|q| q.gci)),
+                num(s.and_then(|q| q.particles_across_wetted)),
                 num(an.map(|q| q.peak_pa)),
                 num(an.map(|q| q.peak_time_s)),
                 num(an.map(|q| q.impulse_pa_s)),
                 num(e.sph.as_ref().map(|r| r.force_peak_n_per_m)),
                 num(e.analytic.as_ref().map(|r| r.force_peak_n_per_m)),
+                num(design.map(|d| d.value)),
+                design.map_or(String::new(), |d| d.source.to_string()),
                 e.failed.clone().unwrap_or_default(),
                 e.design_event
                     .as_ref()
@@ -489,6 +684,16 @@ mod tests {
             convergence_statement: None,
             wetted,
             still_rising,
+            impact: Some(ImpactStatus::Resolved),
+            impact_window_s: Some([0.01, 0.06]),
+            slamming_peak_pa: Some(peak),
+            slamming_peak_time_s: Some(0.05),
+            slamming_impulse_pa_s: Some(1.0),
+            rise_time_s: Some(0.01),
+            hydrostatic_pa: Some(10.0),
+            largest_phase: Some(Phase::Impact),
+            gci: None,
+            particles_across_wetted: Some(12.0),
         }
     }
 
@@ -517,6 +722,11 @@ mod tests {
             force_peak_n_per_m: 250.0,
             force_peak_time_s: 0.05,
             force_convergence: None,
+            force_slamming_peak_n_per_m: Some(250.0),
+            force_slamming_time_s: Some(0.05),
+            force_hydrostatic_n_per_m: Some(5.0),
+            force_gci: None,
+            force_convergence_statement: None,
             sensors: vec![
                 sph_sensor("K1", 2780.0, true, false),
                 sph_sensor("K2", 1120.0, true, true),
@@ -545,8 +755,14 @@ mod tests {
 
     #[test]
     fn a_sensor_the_sph_did_not_wet_takes_the_analytic_design_value_and_says_so() {
-        let e = event();
-        assert_eq!(e.sensor_peak("K1"), Some((2780.0, "sph")));
+        let mut e = event();
+        if let Some(s) = &mut e.sph {
+            s.sensors[0].convergence = Some("converged".into());
+            s.sensors[0].gci = Some(0.01);
+        }
+        let (v, src) = e.sensor_peak("K1").unwrap();
+        assert!((v - 2780.0 * 1.01).abs() < 1e-9);
+        assert_eq!(src, "sph (converged)");
         assert_eq!(e.sensor_peak("K3"), Some((3750.0, "analytic (dry in SPH)")));
         let st = stations(std::slice::from_ref(&e), &[(0.1, 1.2)]);
         let k3 = st[0]
@@ -555,9 +771,11 @@ mod tests {
             .find(|d| d.name == "K3")
             .unwrap();
         assert_eq!(k3.source, "analytic (dry in SPH)");
-        let w = sensor_warnings(e.sph.as_ref().unwrap(), e.analytic.as_ref());
+        let mut r = e.sph.clone().unwrap();
+        r.sensors[1].impact = Some(ImpactStatus::InTransient);
+        let w = sensor_warnings(&r, e.analytic.as_ref());
         assert_eq!(w.len(), 2, "{w:?}");
-        assert!(w[0].starts_with("sensor K2") && w[0].contains("still rising"));
-        assert!(w[1].starts_with("sensor K3") && w[1].contains("3.75 kPa"));
+        assert!(w[0].starts_with("sensor K3") && w[0].contains("3.75 kPa"));
+        assert!(w[1].starts_with("sensors K2") && w[1].contains("contact transient"));
     }
 }

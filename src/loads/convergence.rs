@@ -45,6 +45,9 @@ pub enum Verdict {
     NotAssessed,
     /// The quantity is zero (e.g. a sensor never wetted) at the reported resolution.
     NotWetted,
+    /// The coarser run's peak is another event than the reported one (another phase, or a peak time
+    /// outside the matching window; [`crate::loads::anatomy::matched`]), so the two are not compared.
+    Mismatched,
 }
 
 impl Verdict {

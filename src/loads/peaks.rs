@@ -1,13 +1,13 @@
 //! Peak value, time of peak and impulse of a time history; raw and after an optional zero-phase low-pass
 //! filter (the cut-off is part of the result).
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use crate::loads::butterworth::{LowPass, resample_uniform};
 use crate::numerics::quadrature::trapezoid;
 
 /// Peak of a history.
-#[derive(Debug, Clone, Copy, Serialize, PartialEq)]
+#[derive(Debug, Clone, Copy, Serialize, Deserialize, PartialEq)]
 pub struct Peak {
     /// Largest value.
     pub value: f64,

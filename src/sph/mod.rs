@@ -26,6 +26,7 @@ pub mod output;
 pub mod output_dir;
 pub mod particles;
 pub mod peak_snapshot;
+pub mod phases;
 pub mod rates;
 pub mod refinement;
 pub mod riemann;
@@ -81,6 +82,9 @@ pub struct NamedSummary {
     pub integration_span_m: Option<[f64; 2]>,
     #[serde(flatten)]
     pub summary: Summary,
+    /// The record's phases and its slamming peak ([`crate::loads::anatomy`]), for a section run.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub anatomy: Option<crate::loads::anatomy::Anatomy>,
 }
 
 /// The result of a run, written as `summary.json` and printed by `--json`.
@@ -255,22 +259,31 @@ fn summarise_run(sim: &Simulation, wall_s: f64, stopped: Option<String>) -> Resu
     let s = &sim.setup;
     let fc = s.filter_cutoff_hz;
     let t_tr = contact_transient_end(h, s.dp);
+    let phases = sim
+        .section()
+        .map(|sec| phases::RunPhases::new(sec, h, s.dp, s.c0, s.rho0, s.initial_immersion, t_tr));
     let force = NamedSummary {
         name: "section force".into(),
         unit: "N/m".into(),
         width_m: None,
         integration_span_m: None,
         summary: summarise_after(&h.t, &h.fz, fc, t_tr)?,
+        anatomy: phases.as_ref().map(|p| p.force()),
     };
     let mut sensors = Vec::new();
     let spans = sim.sensors().spans();
     for (k, (name, col)) in h.sensor_names.iter().zip(&h.sensors).enumerate() {
+        let span = spans.get(k).copied();
         sensors.push(NamedSummary {
             name: name.clone(),
             unit: "Pa".into(),
             width_m: s.sensors.get(k).map(|x| x.width_m),
-            integration_span_m: spans.get(k).copied(),
+            integration_span_m: span,
             summary: summarise_after(&h.t, col, fc, t_tr)?,
+            anatomy: phases
+                .as_ref()
+                .zip(span)
+                .map(|(p, span)| p.sensor(span, col)),
         });
     }
     let k_tr = h.t.partition_point(|&t| t < t_tr);
@@ -351,15 +364,18 @@ fn contact_transient_end(h: &History, dp: f64) -> f64 {
         .map_or(h.t.last().copied().unwrap_or(0.0), |k| h.t[k])
 }
 
-/// A warning for each sensor narrower than [`sensors::MIN_WIDTH_DP`] dp, with the span it is integrated
-/// over instead.
+/// A warning for each sensor narrower than [`sensors::MIN_WIDTH_DP`] dp whose integration span is more
+/// than 10 % wider than the sensor, with the span it is integrated over instead.
 fn narrow_sensor_warnings(sim: &Simulation) -> Vec<String> {
     let dp = sim.setup.dp;
     sim.setup
         .sensors
         .iter()
         .zip(sim.sensors().spans())
-        .filter(|(s, _)| s.width_m < sensors::MIN_WIDTH_DP * dp)
+        // a span within 10 % of the sensor's width reads the same pressure: no warning for it
+        .filter(|(s, span)| {
+            s.width_m < sensors::MIN_WIDTH_DP * dp && span[1] - span[0] > 1.1 * s.width_m
+        })
         .map(|(s, span)| {
             format!(
                 "sensor '{}' is {:.1} mm wide, narrower than {} particle spacings ({:.1} mm): a span that \

@@ -76,20 +76,31 @@ pub struct ReportedPeak {
     pub transient_tail: bool,
     /// The peak is the last sample of the run: the quantity was still rising.
     pub at_end: bool,
+    /// The record's phases, for the slamming peak of a section run's sensor or force: then `value` is the
+    /// slamming peak (0 when there is none) and the levels are compared only when their peaks are the
+    /// same event ([`crate::loads::anatomy::matched`]).
+    pub anatomy: Option<crate::loads::anatomy::Anatomy>,
 }
 
 /// The peaks a summary reports: force and contour peak pressure, and every sensor, raw and (when a
 /// filter was applied) filtered, all after the contact transient.
 pub fn reported_peaks(s: &RunSummary) -> Vec<ReportedPeak> {
     let mut out = Vec::new();
-    let mut add = |name: &str, unit: &str, sm: &crate::loads::peaks::Summary| {
+    let mut add = |name: &str, unit: &str, ns: &crate::sph::NamedSummary| {
+        let sm = &ns.summary;
         let (tail, at_end) = (sm.at_transient_end, sm.at_record_end);
+        // The slamming peak of the impact phase where the record has its anatomy.
+        let value = match &ns.anatomy {
+            Some(a) => a.slamming_peak.map_or(0.0, |p| p.value),
+            None => sm.raw.value,
+        };
         out.push(ReportedPeak {
             name: format!("{name} raw"),
             unit: unit.to_string(),
-            value: sm.raw.value,
-            transient_tail: tail,
-            at_end,
+            value,
+            transient_tail: tail && ns.anatomy.is_none(),
+            at_end: at_end && ns.anatomy.is_none(),
+            anatomy: ns.anatomy.clone(),
         });
         if let (Some(f), Some(lp)) = (&sm.filtered, &sm.filter) {
             out.push(ReportedPeak {
@@ -98,12 +109,13 @@ pub fn reported_peaks(s: &RunSummary) -> Vec<ReportedPeak> {
                 value: f.value,
                 transient_tail: tail,
                 at_end,
+                anatomy: None,
             });
         }
     };
-    add("section force", "N/m", &s.force.summary);
+    add("section force", "N/m", &s.force);
     for sen in &s.sensors {
-        add(&format!("sensor {}", sen.name), "Pa", &sen.summary);
+        add(&format!("sensor {}", sen.name), "Pa", sen);
     }
     out.push(ReportedPeak {
         name: "contour peak pressure".into(),
@@ -111,8 +123,62 @@ pub fn reported_peaks(s: &RunSummary) -> Vec<ReportedPeak> {
         value: s.peak_contour_pressure_pa,
         transient_tail: s.peak_contour_at_transient_end,
         at_end: false,
+        anatomy: None,
     });
     out
+}
+
+/// The statement of a slamming peak (a record with its anatomy): the levels are compared from the finest
+/// down for as long as each companion's peak is the same event as the reported one; a companion whose
+/// peak is another event (or that has none) ends the comparison, and the statement says why.
+fn slamming_statement(levels: &[&ReportedPeak], dp: &[f64]) -> PeakConvergence {
+    let (name, unit) = (&levels[0].name, &levels[0].unit);
+    let fine = levels[0]
+        .anatomy
+        .as_ref()
+        .expect("slamming statement of a record with anatomy");
+    if fine.slamming_peak.is_none() {
+        let mut c = assess(name, unit, &dp[..1], &[0.0]);
+        c.verdict = Verdict::NotAssessed;
+        c.statement = format!(
+            "{name}: no slamming peak at the reported resolution ({}); nothing to assess",
+            fine.status.describe()
+        );
+        return c;
+    }
+    let mut n = 1;
+    let mut why = None;
+    for l in &levels[1..] {
+        match l
+            .anatomy
+            .as_ref()
+            .map(|a| crate::loads::anatomy::matched(fine, a))
+        {
+            Some(Ok(())) => n += 1,
+            Some(Err(e)) => {
+                why = Some(e);
+                break;
+            }
+            None => break,
+        }
+    }
+    let values: Vec<f64> = levels[..n].iter().map(|p| p.value).collect();
+    let mut c = assess(name, unit, &dp[..n], &values);
+    c.dp_m = dp.to_vec();
+    c.values = levels.iter().map(|p| p.value).collect();
+    if let Some(why) = why {
+        let at = dp[n] * 1e3;
+        if n == 1 {
+            c.verdict = Verdict::Mismatched;
+            c.statement = format!(
+                "{name}: not assessed: the companion at dp {at:.3} mm does not show the same impact ({why})"
+            );
+        } else {
+            c.statement
+                .push_str(&format!("; the level at dp {at:.3} mm is left out: {why}"));
+        }
+    }
+    c
 }
 
 /// The convergence statement of one peak from its values at every level (finest first), with two
@@ -120,6 +186,9 @@ pub fn reported_peaks(s: &RunSummary) -> Vec<ReportedPeak> {
 /// tail of the contact transient at some level is not a hydrodynamic peak there, and values identical
 /// at every spacing come from something the resolution does not touch (an initial state, a clamp).
 fn statement(levels: &[&ReportedPeak], dp: &[f64]) -> PeakConvergence {
+    if levels[0].anatomy.is_some() {
+        return slamming_statement(levels, dp);
+    }
     let values: Vec<f64> = levels.iter().map(|p| p.value).collect();
     let (name, unit) = (&levels[0].name, &levels[0].unit);
     let mut c = assess(name, unit, dp, &values);
@@ -304,4 +373,74 @@ pub fn convergence_csv(
         })
         .collect();
     crate::sph::output::csv_text(prov, &header, &rows)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::loads::anatomy::{Anatomy, ImpactStatus, ImpactWindow, Phase};
+    use crate::loads::peaks::Peak;
+
+    fn slam(value: f64, time: f64) -> ReportedPeak {
+        let p = Peak {
+            value,
+            time,
+            impulse: 0.0,
+        };
+        ReportedPeak {
+            name: "sensor S raw".into(),
+            unit: "Pa".into(),
+            value,
+            transient_tail: false,
+            at_end: false,
+            anatomy: Some(Anatomy {
+                status: ImpactStatus::Resolved,
+                window: Some(ImpactWindow::around(0.06, 0.09, 0.002, 1.0)),
+                record_end_from_s: 0.17,
+                slamming_peak: Some(p),
+                hydrostatic_at_peak: Some(0.0),
+                at_window_end: false,
+                largest: p,
+                largest_phase: Phase::Impact,
+                spikes: 0,
+                crossing_half_width_m: None,
+                rise_time_s: None,
+            }),
+        }
+    }
+
+    #[test]
+    fn peaks_of_different_events_get_no_verdict() {
+        // S174-2 of the committed Ochi report: fine peak at 134.9 ms, companion at 177.9 ms
+        let (a, b) = (slam(2602.0, 0.1349), slam(2600.0, 0.1779));
+        let c = statement(&[&a, &b], &[0.004, 0.008]);
+        assert_eq!(c.verdict, Verdict::Mismatched, "{}", c.statement);
+        assert!(c.statement.contains("same impact"), "{}", c.statement);
+        // the same values at matching times are compared
+        let b = slam(2600.0, 0.136);
+        let c = statement(&[&a, &b], &[0.004, 0.008]);
+        assert_eq!(c.verdict, Verdict::Converged, "{}", c.statement);
+    }
+
+    #[test]
+    fn a_third_level_of_another_event_is_left_out_with_the_reason() {
+        let (a, b, c3) = (slam(2000.0, 0.1), slam(1900.0, 0.101), slam(500.0, 0.17));
+        let c = statement(&[&a, &b, &c3], &[0.002, 0.004, 0.008]);
+        assert_eq!(c.order_used, Some(1.0));
+        assert!(c.statement.contains("left out"), "{}", c.statement);
+        assert_eq!(c.values.len(), 3);
+    }
+
+    #[test]
+    fn no_slamming_peak_is_not_assessed() {
+        let mut a = slam(0.0, 0.0);
+        if let Some(an) = &mut a.anatomy {
+            an.slamming_peak = None;
+            an.status = ImpactStatus::InTransient;
+        }
+        let b = slam(1000.0, 0.05);
+        let c = statement(&[&a, &b], &[0.002, 0.004]);
+        assert_eq!(c.verdict, Verdict::NotAssessed);
+        assert!(c.statement.contains("contact transient"), "{}", c.statement);
+    }
 }

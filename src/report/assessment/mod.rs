@@ -1,7 +1,8 @@
 //! The assessment report: `report.pdf` (A4) and every figure as its own SVG with a CSV twin, drawn from
 //! the saved results of `slamtool assess` ([`data::Saved`]) without recomputing them.
 //!
-//! Contents (issue #11): title block with the SHA-256 of every input; summary (design pressure per
+//! Contents (issue #11): title block with the SHA-256 of every input; the sign-off page (design
+//! slamming loads with uncertainty, source, verdict and validity flags: [`signoff`]); summary (design pressure per
 //! station and sensor, governing events, limit checks, every warning); hull (body plan, particulars);
 //! motions (RAOs, natural periods, relative motion, slam statistics with Ochi's threshold); impact per
 //! station (entry-velocity profile, pressure and force histories, particle snapshot at peak pressure);
@@ -13,6 +14,7 @@ pub mod data;
 mod front;
 mod impact;
 mod motions;
+mod signoff;
 mod space;
 
 use std::path::{Path, PathBuf};
@@ -78,6 +80,7 @@ impl Report {
 pub fn build(saved: &Saved, stamp: Option<String>) -> Result<Report> {
     let mut r = Report::default();
     front::title(&mut r, saved, stamp);
+    signoff::page(&mut r, saved);
     front::summary(&mut r, saved);
     front::hull(&mut r, saved);
     motions::section(&mut r, saved);

@@ -1,0 +1,215 @@
+//! The sign-off page: the first page after the title, one per assessment. For every panel the design
+//! slamming pressure with its uncertainty, the hydrostatic part, where the value comes from (SPH,
+//! analytic, or a bound), the governing event, the convergence verdict, impulse and rise time, and the
+//! validity flags; the section forces with their verdicts; the total bow force. Everything on it is read
+//! from `summary.json` (the design values of `src/assess/design_rule.rs`); nothing is recomputed.
+
+use serde_json::Value;
+
+use super::Report;
+use super::data::{Saved, list, num, text};
+use crate::report::document::Block;
+
+fn fmt(v: Option<f64>, scale: f64, digits: usize) -> String {
+    v.map_or("-".into(), |x| format!("{:.*}", digits, x * scale))
+}
+
+/// The verdict as words ("-" where none applies).
+fn verdict_words(d: &Value) -> String {
+    match d["verdict"].as_str() {
+        Some(v) => v.replace('_', " "),
+        None => "-".into(),
+    }
+}
+
+/// The validity flags of one design value: what a signer must know about it.
+fn flags(d: &Value) -> Vec<&'static str> {
+    let mut f = Vec::new();
+    match d["impact"].as_str() {
+        Some("acoustic") => f.push("flat keel: acoustic impact, air cushion not modelled"),
+        Some("in_transient") => f.push("impact not resolved by SPH at this spacing"),
+        Some("not_crossed") | Some("after_record") => f.push("no SPH impact in the run"),
+        _ => {}
+    }
+    match d["verdict"].as_str() {
+        Some("not_converged") => f.push("SPH not converged"),
+        Some("mismatched") => f.push("SPH levels show different events"),
+        Some("not_assessed") => f.push("SPH convergence not assessed"),
+        _ => {}
+    }
+    if text(d, "source").starts_with("analytic") && d["sph"].is_number() {
+        f.push("analytic value governs");
+    }
+    f
+}
+
+/// A speed as printed: at most three decimals, trailing zeros dropped.
+pub fn speed(v: Option<f64>) -> String {
+    v.map_or("-".into(), |x| {
+        let s = format!("{x:.3}");
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    })
+}
+
+pub fn page(r: &mut Report, saved: &Saved) {
+    r.heading(1, "Sign-off: design slamming loads");
+    let s = &saved.summary;
+    r.para(&format!(
+        "Design rule: {}. The SPH value is the slamming peak of the sensor's impact window (the analytic \
+         wetted contact crossing the sensor), never a value of the contact transient, of the immersion \
+         that follows or of the end of a run; U is its discretisation uncertainty (GCI of the matched \
+         peaks at the convergence levels). Pressures are totals; the hydrostatic part at the time of the \
+         SPH peak is given apart, as class rules treat them apart. Density {} kg/m3.",
+        text(&s["settings"], "design_value"),
+        fmt(num(&s["settings"], "water_density_kg_m3"), 1.0, 1)
+    ));
+    let mut rows = Vec::new();
+    let mut detail = Vec::new();
+    let mut flagged: Vec<String> = Vec::new();
+    for st in saved.stations() {
+        let f = num(st, "station").unwrap_or(f64::NAN);
+        for d in list(st, "design_pressure_pa") {
+            let u = num(d, "uncertainty");
+            rows.push(vec![
+                format!("{f}"),
+                text(d, "name").to_string(),
+                fmt(num(d, "value"), 1e-3, 2),
+                match (num(d, "sph"), u) {
+                    (Some(p), Some(u)) => format!("{:.2} ± {:.2}", p / 1e3, u / 1e3),
+                    (Some(p), None) => format!("{:.2}", p / 1e3),
+                    _ => "-".into(),
+                },
+                fmt(num(d, "analytic"), 1e-3, 2),
+                fmt(num(d, "hydrostatic"), 1e-3, 2),
+                text(d, "source").to_string(),
+                verdict_words(d),
+                speed(num(d, "speed_m_per_s")),
+            ]);
+            detail.push(vec![
+                text(d, "name").to_string(),
+                text(d, "impact").replace('_', " "),
+                fmt(num(d, "peak_time_s"), 1e3, 1),
+                fmt(num(d, "rise_time_s"), 1e3, 2),
+                fmt(num(d, "impulse"), 1.0, 2),
+                fmt(num(d, "particles_across_wetted"), 1.0, 1),
+                fmt(num(d, "acoustic_bound"), 1e-3, 0),
+            ]);
+            let fl = flags(d);
+            if !fl.is_empty() {
+                flagged.push(format!("{}: {}", text(d, "name"), fl.join("; ")));
+            }
+        }
+    }
+    r.push(Block::Table {
+        caption: "Design slamming pressure per panel (kPa) with the governing event".into(),
+        header: [
+            "station",
+            "panel",
+            "design",
+            "SPH ± U",
+            "analytic",
+            "hydrostatic",
+            "source",
+            "verdict",
+            "speed m/s",
+        ]
+        .map(String::from)
+        .to_vec(),
+        rows,
+    });
+    r.push(Block::Table {
+        caption: "The governing impact of each panel: SPH impact status, slamming peak time, rise time, \
+                  impulse over the impact window, particles across the analytic wetted half-width when \
+                  the contact crosses the panel, and the water-hammer bound rho c_w V of a flat keel \
+                  (an upper bound without air)"
+            .into(),
+        header: [
+            "panel",
+            "SPH impact",
+            "peak ms",
+            "rise ms",
+            "impulse Pa s",
+            "particles across",
+            "water hammer kPa",
+        ]
+        .map(String::from)
+        .to_vec(),
+        rows: detail,
+    });
+    let forces: Vec<Vec<String>> = saved
+        .stations()
+        .iter()
+        .filter_map(|st| {
+            let d = &st["section_force_peak_n_per_m"];
+            d.is_object().then(|| {
+                vec![
+                    format!("{}", num(st, "station").unwrap_or(f64::NAN)),
+                    fmt(num(d, "value"), 1.0, 0),
+                    match (num(d, "sph"), num(d, "uncertainty")) {
+                        (Some(p), Some(u)) => format!("{p:.0} ± {u:.0}"),
+                        (Some(p), None) => format!("{p:.0}"),
+                        _ => "-".into(),
+                    },
+                    fmt(num(d, "analytic"), 1.0, 0),
+                    fmt(num(d, "hydrostatic"), 1.0, 0),
+                    text(d, "source").to_string(),
+                    verdict_words(d),
+                    speed(num(d, "speed_m_per_s")),
+                ]
+            })
+        })
+        .collect();
+    r.push(Block::Table {
+        caption: "Section force per metre (N/m): design value, SPH slamming peak ± U, generalised Wagner, \
+                  buoyancy at the SPH peak (the hydrostatic part), source and verdict"
+            .into(),
+        header: [
+            "station",
+            "design",
+            "SPH ± U",
+            "Wagner",
+            "buoyancy",
+            "source",
+            "verdict",
+            "speed m/s",
+        ]
+        .map(String::from)
+        .to_vec(),
+        rows: forces,
+    });
+    let bow = list(s, "bow_force");
+    let top = bow
+        .iter()
+        .filter(|b| num(b, "peak_sum_total_n").is_some())
+        .max_by(|a, b| {
+            num(a, "peak_sum_total_n")
+                .unwrap_or(0.0)
+                .total_cmp(&num(b, "peak_sum_total_n").unwrap_or(0.0))
+        });
+    match top {
+        Some(b) => r.para(&format!(
+            "Total bow slamming force, largest over the events: {:.1} N (upper bound, sum of the stations' \
+             design section forces) at {} m/s in {}, point of action {:.3} m from midship; at one instant \
+             {} N. It carries the verdicts of the section forces above.",
+            num(b, "peak_sum_total_n").unwrap_or(f64::NAN),
+            speed(num(b, "speed_m_per_s")),
+            text(b, "wave"),
+            num(b, "peak_sum_x_action_m").unwrap_or(f64::NAN),
+            fmt(num(&b["time_coincident"], "total_n"), 1.0, 1)
+        )),
+        None => r.para("Total bow slamming force: no station slams, or fewer than two stations."),
+    }
+    r.heading(2, "Validity flags");
+    let mut items = flagged;
+    items.push(
+        "2D+t: each station is a 2D water entry; three-dimensional relief of the flow along the hull is \
+         not modelled (conservative away from the stem, where the 2D assumption holds least)."
+            .into(),
+    );
+    items.push(
+        "Single-phase SPH: no air. At flat and low-deadrise panels the impact is cushioned by air in \
+         reality; their design values here are the analytic estimates, with the water-hammer bound."
+            .into(),
+    );
+    r.push(Block::List(items));
+}

@@ -1,0 +1,234 @@
+//! The phases of a run's records ([`crate::loads::anatomy`]): for every sensor the expected impact window
+//! from the generalised Wagner contact half-width c(t) along the run's own velocity history (with the
+//! run's initial immersion), and for the section force the window up to full wetting; then each record's
+//! anatomy with its hydrostatic part.
+//!
+//! Rules beyond the module notes of [`crate::loads::anatomy`]:
+//!
+//! * a sensor is crossed by the contact at an **acoustic** speed when Wagner's contact speed there is
+//!   at the water-hammer limit (a flat keel: c jumps to the flat half-width at contact), or when Wagner's
+//!   jet-root pressure rho c'^2 / 2 at the crossing exceeds rho c0 V, the largest pressure a weakly
+//!   compressible fluid with the run's artificial sound speed c0 can carry: SPH does not compute that
+//!   impact, whatever the spacing;
+//! * the section force's window runs from the end of the contact transient to Wagner's full wetting
+//!   (the time c reaches the chine or widest point; the end of the record when it does not stop), widened
+//!   as a sensor's; its hydrostatic part is the buoyancy rho g A(d) of the section immersed to the keel
+//!   depth d.
+
+use crate::analytic::generalised_wagner::{self, WagnerEstimate};
+use crate::loads::anatomy::{
+    Anatomy, Expectation, ImpactStatus, ImpactWindow, WINDOW_FRACTION, anatomy, time_reaching,
+};
+use crate::sph::body::{Section, point_at_arc};
+use crate::sph::sensors::History;
+
+/// Gravity (m/s2) of the hydrostatic parts, as the solver's.
+const G: f64 = 9.81;
+
+/// The value of `y` (sampled at `t`) at time `x`, linearly interpolated and held at the ends.
+fn at(t: &[f64], y: &[f64], x: f64) -> f64 {
+    let k = t.partition_point(|&s| s <= x);
+    if k == 0 {
+        return y.first().copied().unwrap_or(0.0);
+    }
+    if k >= t.len() {
+        return y.last().copied().unwrap_or(0.0);
+    }
+    let f = (x - t[k - 1]) / (t[k] - t[k - 1]);
+    y[k - 1] + f * (y[k] - y[k - 1])
+}
+
+/// What a run's phases are measured against.
+pub struct RunPhases<'a> {
+    pub section: &'a Section,
+    pub history: &'a History,
+    pub wagner: Option<WagnerEstimate>,
+    pub dp: f64,
+    pub c0: f64,
+    pub rho: f64,
+    pub d0: f64,
+    pub transient_end_s: f64,
+}
+
+impl<'a> RunPhases<'a> {
+    /// The Wagner estimate of the run (none when the model cannot take the section).
+    pub fn new(
+        section: &'a Section,
+        history: &'a History,
+        dp: f64,
+        c0: f64,
+        rho: f64,
+        d0: f64,
+        transient_end_s: f64,
+    ) -> Self {
+        let wagner = generalised_wagner::estimate_immersed(
+            section.half_points(),
+            d0,
+            &history.t,
+            &history.v_down,
+            rho,
+        )
+        .ok()
+        .filter(|e| !e.t.is_empty());
+        Self {
+            section,
+            history,
+            wagner,
+            dp,
+            c0,
+            rho,
+            d0,
+            transient_end_s,
+        }
+    }
+
+    fn keel_depth(&self, t: f64) -> f64 {
+        -at(&self.history.t, &self.history.z_keel, t)
+    }
+
+    fn speed(&self, t: f64) -> f64 {
+        at(&self.history.t, &self.history.v_down, t)
+    }
+
+    /// The expectation of the sensor integrated over the contour span [s0, s1] (m from the keel).
+    pub fn sensor_expectation(&self, span: [f64; 2]) -> Expectation {
+        let none = |status, half_width| Expectation {
+            window: None,
+            status,
+            transient_end_s: self.transient_end_s,
+            crossing_half_width_m: half_width,
+        };
+        let Some(w) = &self.wagner else {
+            return none(ImpactStatus::NotCrossed, None);
+        };
+        let edge = |s: f64| point_at_arc(self.section, s).map(|p| p[0].abs());
+        let (Some(a), Some(b)) = (edge(span[0]), edge(span[1])) else {
+            return none(ImpactStatus::NotCrossed, None);
+        };
+        let (y_lo, y_hi) = (a.min(b), a.max(b));
+        let c_start = w.half_width[0];
+        if self.d0 > 0.0 && y_hi <= c_start {
+            return none(ImpactStatus::WettedAtStart, None);
+        }
+        let (Some(t_lo), Some(t_hi)) = (
+            time_reaching(&w.t, &w.half_width, y_lo),
+            time_reaching(&w.t, &w.half_width, y_hi),
+        ) else {
+            return none(ImpactStatus::NotCrossed, None);
+        };
+        // Wagner's sample at the end of the crossing: acoustic, or beyond what c0 can carry
+        let k = w.half_width.iter().position(|&c| c >= y_hi).unwrap_or(0);
+        let v = self.speed(t_hi);
+        let acoustic = (self.d0 == 0.0 && w.acoustic_limited.get(k).copied().unwrap_or(false))
+            || w.peak_pressure.get(k).copied().unwrap_or(0.0) > self.rho * self.c0 * v.max(0.0);
+        if acoustic {
+            return none(ImpactStatus::Acoustic, Some(y_hi));
+        }
+        if t_hi <= self.transient_end_s {
+            return none(ImpactStatus::InTransient, Some(y_hi));
+        }
+        let window = ImpactWindow::around(t_lo, t_hi, self.dp, v);
+        Expectation {
+            window: Some(window),
+            status: ImpactStatus::Resolved,
+            transient_end_s: self.transient_end_s,
+            crossing_half_width_m: Some(y_hi),
+        }
+    }
+
+    /// The anatomy of the sensor record `x` integrated over `span`.
+    pub fn sensor(&self, span: [f64; 2], x: &[f64]) -> Anatomy {
+        let e = self.sensor_expectation(span);
+        let z_s = point_at_arc(self.section, 0.5 * (span[0] + span[1])).map_or(0.0, |p| p[1]);
+        let hydro = |t: f64| self.rho * G * (self.keel_depth(t) - z_s).max(0.0);
+        anatomy(&self.history.t, x, &e, &hydro)
+    }
+
+    /// The anatomy of the section force record.
+    pub fn force(&self) -> Anatomy {
+        let h = self.history;
+        let t_last = h.t.last().copied().unwrap_or(0.0);
+        let t_full = match &self.wagner {
+            Some(w) if w.stopped.is_some() => w.t.last().copied().unwrap_or(t_last),
+            _ => t_last,
+        };
+        let v = self.speed(t_full);
+        let lag = if v > 0.0 {
+            crate::loads::anatomy::LAG_SPACINGS * self.dp / v
+        } else {
+            0.0
+        };
+        let e = Expectation {
+            window: Some(ImpactWindow {
+                crossing_start_s: h.t.first().copied().unwrap_or(0.0),
+                crossing_end_s: t_full,
+                start_s: self.transient_end_s,
+                end_s: t_full * (1.0 + WINDOW_FRACTION) + lag,
+            }),
+            status: ImpactStatus::Resolved,
+            transient_end_s: self.transient_end_s,
+            crossing_half_width_m: None,
+        };
+        let hull_section = crate::hull::Section::new(self.section.half_points().to_vec());
+        let hydro = |t: f64| self.rho * G * hull_section.properties(self.keel_depth(t)).area;
+        anatomy(&h.t, &h.fz, &e, &hydro)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn history(v: f64, dt: f64, n: usize) -> History {
+        let t: Vec<f64> = (0..n).map(|k| k as f64 * dt).collect();
+        History {
+            z_keel: t.iter().map(|&s| -v * s).collect(),
+            v_down: vec![v; n],
+            a_down: vec![0.0; n],
+            fz: vec![0.0; n],
+            fy: vec![0.0; n],
+            fy_starboard: vec![0.0; n],
+            p_contour_max: vec![0.0; n],
+            s_at_p_max: vec![0.0; n],
+            sensor_names: Vec::new(),
+            sensors: Vec::new(),
+            t,
+        }
+    }
+
+    #[test]
+    fn a_wedge_sensor_window_brackets_wagner_crossing() {
+        // 30 deg wedge at 2 m/s: Wagner's c = (pi/2) V t / tan(beta)
+        let beta = 30f64.to_radians();
+        let sec = Section::wedge(beta, 0.3, 0.3).unwrap();
+        let h = history(2.0, 1e-4, 2001);
+        let ph = RunPhases::new(&sec, &h, 0.002, 40.0, 1000.0, 0.0, 0.002);
+        let s = 0.2;
+        let e = ph.sensor_expectation([s - 0.01, s + 0.01]);
+        let w = e.window.unwrap();
+        let t_hi = (s + 0.01) * beta.cos() * beta.tan() / (std::f64::consts::FRAC_PI_2 * 2.0);
+        assert!((w.crossing_end_s / t_hi - 1.0).abs() < 0.02, "{w:?} {t_hi}");
+        assert!(w.start_s < w.crossing_start_s && w.end_s > w.crossing_end_s);
+    }
+
+    #[test]
+    fn keel_sensors_in_the_transient_and_flat_keels_are_named() {
+        let beta = 30f64.to_radians();
+        let sec = Section::wedge(beta, 0.3, 0.3).unwrap();
+        let h = history(2.0, 1e-4, 2001);
+        let ph = RunPhases::new(&sec, &h, 0.002, 40.0, 1000.0, 0.0, 0.002);
+        assert_eq!(
+            ph.sensor_expectation([0.0, 0.004]).status,
+            ImpactStatus::InTransient
+        );
+        // a flat keel of half-width 0.05 m
+        let flat =
+            Section::from_half_points(vec![[0.0, 0.0], [0.05, 0.0], [0.3, 0.15], [0.3, 0.3]])
+                .unwrap();
+        let ph = RunPhases::new(&flat, &h, 0.002, 40.0, 1000.0, 0.0, 0.002);
+        assert_eq!(
+            ph.sensor_expectation([0.01, 0.03]).status,
+            ImpactStatus::Acoustic
+        );
+    }
+}
