@@ -206,22 +206,11 @@ fn document_outline_has_one_summary_row_and_one_section_per_case() {
     let dir = tempfile::tempdir().unwrap();
     let suite = validate::run_suite(&cases, Mode::Quick, dir.path().to_path_buf(), &mut |_| {});
     let o = validate::document::outline(&suite, "test").unwrap();
-    // The front page opens with the tally of every verdict, zeros included.
-    let slamtool::report::document::Block::KeyValue(tally) = &o.blocks[0] else {
-        panic!("the first block is not the tally");
-    };
-    let count = |l: &str| tally.iter().find(|t| t.0 == l).map(|t| t.1.as_str());
-    assert_eq!(count("pass"), Some("1"));
-    assert_eq!(count("known failure"), Some("1"));
-    assert_eq!(count("pending data"), Some("0"));
-    assert_eq!(count("fail"), Some("0"));
-    assert!(
-        o.subtitle.iter().any(|l| l.contains("2 cases: 1 pass")),
-        "{:?}",
-        o.subtitle
-    );
-    let slamtool::report::document::Block::Table { rows, header, .. } = &o.blocks[1] else {
-        panic!("the second block is not the summary table");
+    // The front page states the tally of every verdict, zeros included.
+    let all = "2 cases: 1 pass, 0 pass of a known failure, 1 known failure, 0 pending data, 0 fail, 0 error";
+    assert!(o.subtitle.iter().any(|l| l == all), "{:?}", o.subtitle);
+    let slamtool::report::document::Block::Table { rows, header, .. } = &o.blocks[0] else {
+        panic!("the first block is not the summary table");
     };
     // case and quantity share the first column ("case: quantity"), then computed, reference, error,
     // tolerance, verdict
@@ -277,10 +266,10 @@ fn a_known_failure_is_written_from_the_run_s_numbers_and_literal_numbers_are_ref
     // Within the tolerance: the text says the mark should be revisited.
     let r = run("ours {computed}", 0.05);
     assert_eq!(r.verdict, Verdict::UnexpectedPass);
+    let text = r.known_failure.unwrap();
     assert!(
-        r.known_failure
-            .unwrap()
-            .starts_with("within the tolerance in this run")
+        text.contains("within the tolerance in this run") && !text.contains("ours"),
+        "{text}"
     );
     // A placeholder the computation does not give is an error of the case, not a silent gap.
     let r = run("the {missing} number", 0.001);
