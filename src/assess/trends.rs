@@ -3,7 +3,7 @@
 //! available; the trends are qualitative (data/reference/ochi1958_vform.toml, `[published_findings]`).
 //! Each check is a function of the design values the assessment reports (per station, or per event
 //! through [`EventResult::sensor_peak`]), whatever rule computes them, and is the one implementation both
-//! the design report and `slamtool validate` (src/validate/ochi_speed.rs) use, so the two reports give
+//! the design report and `slamtool validate` (src/validate/ochi_trends.rs) use, so the two reports give
 //! the same verdict on the same assessment.
 
 use super::comparisons::{Comparison, OCHI, TrendCheck, Validation, reference_number, sensor_peak};
