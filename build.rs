@@ -1,8 +1,15 @@
 //! Records the git commit the binary is built from, for the provenance of every result, with "-modified"
 //! appended when the sources (src/, build.rs, Cargo.toml, Cargo.lock) differ from that commit. A build from
 //! a tarball (no git, or not a repository) records "unknown" and never fails.
+//!
+//! It also records the SHA-256 of the solver sources (`src/source_hash.rs`, compiled here as the same
+//! file the library uses), the part of the run cache's key that makes a changed solver miss.
 
 use std::process::Command;
+
+#[path = "src/source_hash.rs"]
+#[allow(dead_code)]
+mod source_hash;
 
 /// Output of `git args...`, trimmed, if git exists and succeeds.
 fn git(args: &[&str]) -> Option<String> {
@@ -33,6 +40,15 @@ fn main() {
         commit
     };
     println!("cargo:rustc-env=SLAMTOOL_GIT_COMMIT={commit}");
+    let root = std::path::PathBuf::from(std::env::var("CARGO_MANIFEST_DIR").unwrap_or_default());
+    match source_hash::source_hash(&root, source_hash::SOLVER_SOURCES) {
+        Ok(h) => println!("cargo:rustc-env=SLAMTOOL_SOLVER_SOURCES_SHA256={h}"),
+        // A build without its solver sources cannot say what its runs depend on: refuse it.
+        Err(e) => {
+            eprintln!("build.rs: cannot hash the solver sources: {e}");
+            std::process::exit(1);
+        }
+    }
     println!("cargo:rerun-if-changed=build.rs");
     // Re-check the working tree whenever a source changes.
     for p in ["src", "Cargo.toml", "Cargo.lock"] {

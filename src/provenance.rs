@@ -15,6 +15,13 @@ pub const TOOL: &str = concat!("slamtool ", env!("CARGO_PKG_VERSION"));
 /// The git commit this build was made from, or "unknown" (set by `build.rs`).
 pub const GIT_COMMIT: &str = env!("SLAMTOOL_GIT_COMMIT");
 
+#[path = "source_hash.rs"]
+pub mod source_hash;
+
+/// SHA-256 of the solver sources this build was made from ([`source_hash::SOLVER_SOURCES`], set by
+/// `build.rs` with [`source_hash::source_hash`]): part of the run cache's key.
+pub const SOLVER_SOURCES_SHA256: &str = env!("SLAMTOOL_SOLVER_SOURCES_SHA256");
+
 /// Round every number in `v` to 10 significant digits, so that values computed from round inputs print
 /// as such (`0.093`, not `0.09299999999999999`).
 pub fn tidy_numbers(v: serde_json::Value) -> serde_json::Value {

@@ -28,6 +28,7 @@ provenance = "test"
 kind = "relative"
 value = {tolerance}
 reason = "test"
+stated = "before-results"
 
 [parameters]
 water_density_kg_per_m3 = 1000.0
@@ -105,7 +106,7 @@ fn a_parameter_of_the_wrong_type_is_located_when_the_case_runs() {
     let r = validate::run_case(&case, Mode::Quick, &Default::default());
     assert_eq!(r.verdict, Verdict::Error);
     assert!(
-        r.notes.iter().any(|n| n.contains("case.toml:14:27:")),
+        r.notes.iter().any(|n| n.contains("case.toml:15:27:")),
         "{:?}",
         r.notes
     );
@@ -205,6 +206,9 @@ fn document_outline_has_one_summary_row_and_one_section_per_case() {
     let dir = tempfile::tempdir().unwrap();
     let suite = validate::run_suite(&cases, Mode::Quick, dir.path().to_path_buf(), &mut |_| {});
     let o = validate::document::outline(&suite, "test").unwrap();
+    // The front page states the tally of every verdict, zeros included.
+    let all = "2 cases: 1 pass, 0 pass of a known failure, 1 known failure, 0 pending data, 0 fail, 0 error";
+    assert!(o.subtitle.iter().any(|l| l == all), "{:?}", o.subtitle);
     let slamtool::report::document::Block::Table { rows, header, .. } = &o.blocks[0] else {
         panic!("the first block is not the summary table");
     };
@@ -226,4 +230,128 @@ fn document_outline_has_one_summary_row_and_one_section_per_case() {
         })
         .count();
     assert_eq!(headings, 2);
+}
+
+#[test]
+fn a_known_failure_is_written_from_the_run_s_numbers_and_literal_numbers_are_refused() {
+    let literal = wagner_case(0.001, Some("Veen rounds to 0.1 kPa"));
+    let err = parse(&literal);
+    assert!(
+        err.starts_with("case.toml:7:17:") && err.contains("the number 0.1"),
+        "{err}"
+    );
+    // Words with digits (2D, S093) are not numbers.
+    assert_eq!(
+        parse(&wagner_case(0.001, Some("a 2D estimate at S093"))),
+        "ok"
+    );
+    let run = |known: &str, tol: f64| {
+        let case = Case::from_source(SourceText::from_string(
+            "case.toml",
+            wagner_case(tol, Some(known)),
+        ))
+        .unwrap();
+        validate::run_case(&case, Mode::Quick, &Default::default())
+    };
+    let r = run("Veen's value is {reference} and ours {computed}", 0.001);
+    assert_eq!(r.verdict, Verdict::KnownFailure);
+    let text = r.known_failure.unwrap();
+    assert!(
+        text.starts_with(
+            "computed 4.258 kPa against 4.2 kPa (tolerance ±0.1 %, error +1.4 %): outside the \
+             tolerance."
+        ) && text.ends_with("Veen's value is 4.2 kPa and ours 4.258 kPa"),
+        "{text}"
+    );
+    // Within the tolerance: the text says the mark should be revisited.
+    let r = run("ours {computed}", 0.05);
+    assert_eq!(r.verdict, Verdict::UnexpectedPass);
+    let text = r.known_failure.unwrap();
+    assert!(
+        text.contains("within the tolerance in this run") && !text.contains("ours"),
+        "{text}"
+    );
+    // A placeholder the computation does not give is an error of the case, not a silent gap.
+    let r = run("the {missing} number", 0.001);
+    assert_eq!(r.verdict, Verdict::Error);
+    assert!(
+        r.notes.iter().any(|n| n.contains("{missing}")),
+        "{:?}",
+        r.notes
+    );
+}
+
+#[test]
+fn a_tolerance_revised_after_results_says_so_and_one_sided_bounds_are_marked() {
+    let revised = wagner_case(0.05, None).replace(
+        "stated = \"before-results\"",
+        "stated = \"after-results\"\nrevision = \"widened after the first run\"",
+    );
+    let case = Case::from_source(SourceText::from_string("case.toml", revised.clone())).unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let suite = validate::run_suite(&[case], Mode::Quick, dir.path().to_path_buf(), &mut |_| {});
+    let md = validate::report::markdown(&suite);
+    assert!(
+        md.contains("*Tolerance, revised after results were seen (widened after the first run):*"),
+        "{md}"
+    );
+    assert!(!md.contains("set before the result was seen"), "{md}");
+    let no_revision = revised.replace("revision = \"widened after the first run\"\n", "");
+    assert!(
+        parse(&no_revision).contains("needs `revision`"),
+        "{}",
+        parse(&no_revision)
+    );
+    assert!(
+        parse(&wagner_case(0.05, None).replace("stated = \"before-results\"\n", ""))
+            .contains("stated")
+    );
+    // A one-sided bound passes far below it, and every table says it is one-sided.
+    let one_sided = wagner_case(0.05, None).replace(
+        "kind = \"relative\"\nvalue = 0.05",
+        "kind = \"upper-bound\"\nvalue = 100.0",
+    );
+    let case = Case::from_source(SourceText::from_string("case.toml", one_sided)).unwrap();
+    let r = validate::run_case(&case, Mode::Quick, &Default::default());
+    assert_eq!(r.verdict, Verdict::Pass);
+    let row = validate::report::summary_row(&r);
+    assert_eq!(row.tolerance, "≤ 100 kPa (one-sided bound)");
+}
+
+#[test]
+fn every_file_a_case_reads_is_hashed_and_its_water_density_stated() {
+    let files = validate::case::case_files(&root().join("validation")).unwrap();
+    let keel = files
+        .iter()
+        .find(|f| f.ends_with("ochi1958-particulars.toml"))
+        .unwrap();
+    let case = Case::from_file(keel).unwrap();
+    let r = validate::run_case(&case, Mode::Quick, &Default::default());
+    let paths: Vec<&str> = r.inputs.iter().map(|f| f.path.as_str()).collect();
+    assert!(
+        paths.iter().any(|p| p.ends_with("hulls/ochi-vform.toml"))
+            && paths.iter().any(|p| p.ends_with("ochi1958_vform.toml")),
+        "{paths:?}"
+    );
+    let hull = std::fs::read(root().join("hulls/ochi-vform.toml")).unwrap();
+    let h = r
+        .inputs
+        .iter()
+        .find(|f| f.path.ends_with("hulls/ochi-vform.toml"))
+        .unwrap();
+    assert_eq!(h.sha256, slamtool::provenance::sha256_hex(&hull));
+    let conditions: Vec<String> = r
+        .conditions
+        .iter()
+        .map(|c| format!("{}: {}", c.0, c.1))
+        .collect();
+    assert!(
+        conditions
+            .iter()
+            .any(|c| c.starts_with("water density: 1000 kg/m³"))
+            && conditions
+                .iter()
+                .any(|c| c.starts_with("scale: ") && c.contains("Lpp 6 m")),
+        "{conditions:?}"
+    );
 }

@@ -1,14 +1,25 @@
 //! The run cache of an assessment: each SPH run is keyed by the SHA-256 of a canonical JSON of everything
 //! that determines it (the resolved setup: section polyline, entry-velocity table, sensors and numerics;
-//! the convergence plan; the tool version), and lives in `OUT/cache/<key>/` with its `summary.json`,
-//! `history.csv`, convergence companions and the assessment's record of it (`event.json`, written last).
-//! A run is written into a temporary folder and renamed into place when complete, so an assessment that
-//! is killed (even with SIGKILL) leaves either a finished entry or nothing, and resumes where it stopped.
+//! the convergence plan; the SHA-256 of the solver sources the build was made from,
+//! [`crate::provenance::SOLVER_SOURCES_SHA256`]; the record format), and lives in `OUT/cache/<key>/`
+//! with its `summary.json`, `history.csv`, convergence companions and the assessment's record of it
+//! (`event.json`, written last). A run is written into a temporary folder and renamed into place when
+//! complete, so an assessment that is killed (even with SIGKILL) leaves either a finished entry or
+//! nothing, and resumes where it stopped.
+//!
+//! The tool version (`0.1.0`) is not what determines a run: a changed solver keeps it. The solver
+//! sources' hash is, so a build whose SPH scheme, filters or record code differ never reuses a run of
+//! another, while a commit that touches only reports or the command line keeps the cache.
+//!
+//! Each record carries the SHA-256 of its own text (`event.json`: `{"sha256": ..., "record": ...}`),
+//! checked on reuse: a record edited by hand, or damaged, is recomputed, and the assessment says so.
 
 use std::path::{Path, PathBuf};
 
+use serde::Serialize;
+
 use crate::error::{Error, Result};
-use crate::provenance::{TOOL, sha256_hex};
+use crate::provenance::{SOLVER_SOURCES_SHA256, sha256_hex};
 use crate::sph::{Setup, StudyPlan};
 
 use super::results::SphRecord;
@@ -17,14 +28,24 @@ use super::results::SphRecord;
 pub const RECORD: &str = "event.json";
 
 /// Version of what a cache entry's record holds and means; part of every key, so that a change to the
-/// record (2: sensors carry `wetted` and `still_rising`) makes earlier entries miss instead of being
-/// read with defaults.
-pub const RECORD_FORMAT: u32 = 2;
+/// record makes earlier entries miss instead of being read with defaults. 2: sensors carry `wetted` and
+/// `still_rising`; 3: the key holds the solver sources' hash, and the record its own checksum.
+pub const RECORD_FORMAT: u32 = 3;
 
-/// The cache key of a run.
+/// The cache key of a run made by this build.
 pub fn key(setup: &Setup, study: &StudyPlan) -> Result<String> {
+    key_with(setup, study, SOLVER_SOURCES_SHA256)
+}
+
+/// The cache key of a run of `setup` and `study` by a build whose solver sources hash to
+/// `solver_sources` (the record format is always this build's).
+pub fn key_with(
+    setup: &impl Serialize,
+    study: &impl Serialize,
+    solver_sources: &str,
+) -> Result<String> {
     let canonical = serde_json::to_string(&serde_json::json!({
-        "tool": TOOL,
+        "solver_sources_sha256": solver_sources,
         "record_format": RECORD_FORMAT,
         "setup": setup,
         "study": study,
@@ -38,10 +59,85 @@ pub fn entry(out: &Path, key: &str) -> PathBuf {
     out.join("cache").join(key)
 }
 
-/// A finished entry's record, if there is one that can be read.
+/// What a finished entry's `event.json` gives on reuse.
+#[derive(Debug)]
+pub enum Stored {
+    /// No entry, or no record in it (a run not finished): computed as usual, nothing to say.
+    Missing,
+    /// The record, its checksum verified.
+    Verified(Box<SphRecord>),
+    /// A record whose checksum or format does not hold: it is recomputed, and this says why.
+    Rejected(String),
+}
+
+/// The text of `event.json` for a record: its SHA-256 on the first line, then the record's own text,
+/// which is what the checksum covers byte for byte.
+fn stored_text(record: &impl Serialize) -> Result<String> {
+    let body = serde_json::to_string_pretty(record)
+        .map_err(|e| Error::Invalid(format!("cache record: {e}")))?;
+    Ok(format!(
+        "{{\n  \"sha256\": \"{}\",\n  \"record\": {body}\n}}\n",
+        sha256_hex(body.as_bytes())
+    ))
+}
+
+/// Read `event.json`'s text: the record if its checksum holds, else why not.
+fn verify<T: serde::de::DeserializeOwned>(text: &str) -> std::result::Result<T, String> {
+    let head: serde_json::Value =
+        serde_json::from_str(text).map_err(|e| format!("it is not valid JSON ({e})"))?;
+    let Some(want) = head.get("sha256").and_then(|v| v.as_str()) else {
+        return Err("it carries no checksum (written by an earlier version)".into());
+    };
+    const MARK: &str = "\n  \"record\": ";
+    let body = text
+        .find(MARK)
+        .map(|i| &text[i + MARK.len()..])
+        .and_then(|rest| rest.trim_end().strip_suffix('}'))
+        .map(str::trim_end)
+        .ok_or_else(|| "its layout is not the one this tool writes".to_string())?;
+    let got = sha256_hex(body.as_bytes());
+    if got != want {
+        return Err(format!(
+            "its content does not match its checksum (sha256 {}…, stored {}…): it was edited or damaged",
+            &got[..12],
+            want.chars()
+                .take(12)
+                .filter(char::is_ascii_hexdigit)
+                .collect::<String>()
+        ));
+    }
+    serde_json::from_str(body).map_err(|e| format!("its record cannot be read ({e})"))
+}
+
+/// A finished entry's record, verified against its checksum.
+pub fn load(out: &Path, key: &str) -> Stored {
+    let path = entry(out, key).join(RECORD);
+    let Ok(text) = std::fs::read_to_string(&path) else {
+        return Stored::Missing;
+    };
+    match verify(&text) {
+        Ok(r) => Stored::Verified(Box::new(r)),
+        Err(why) => Stored::Rejected(format!(
+            "cache record {} is not reused: {why}; the run is computed again",
+            path.display()
+        )),
+    }
+}
+
+/// A finished entry's record, if there is one whose checksum holds.
 pub fn lookup(out: &Path, key: &str) -> Option<SphRecord> {
-    let text = std::fs::read_to_string(entry(out, key).join(RECORD)).ok()?;
-    serde_json::from_str(&text).ok()
+    match load(out, key) {
+        Stored::Verified(r) => Some(*r),
+        _ => None,
+    }
+}
+
+/// Why a finished entry of `key` is not reused, if it exists and fails its check.
+pub fn rejection(out: &Path, key: &str) -> Option<String> {
+    match load(out, key) {
+        Stored::Rejected(why) => Some(why),
+        _ => None,
+    }
 }
 
 /// A fresh temporary folder for the run of `key` (left-overs of a killed run removed).
@@ -59,9 +155,7 @@ pub fn temporary(out: &Path, key: &str) -> Result<PathBuf> {
 /// Complete an entry: write the record into the temporary folder, then rename it into place (replacing an
 /// earlier entry of the same key).
 pub fn commit(out: &Path, key: &str, tmp: &Path, record: &SphRecord) -> Result<()> {
-    let json = serde_json::to_string_pretty(record)
-        .map_err(|e| Error::Invalid(format!("cache record: {e}")))?;
-    crate::files::write_text_atomic(&tmp.join(RECORD), &json)?;
+    crate::files::write_text_atomic(&tmp.join(RECORD), &stored_text(record)?)?;
     let dest = entry(out, key);
     if dest.exists() {
         std::fs::remove_dir_all(&dest).map_err(|e| Error::io(&dest, e))?;
@@ -169,6 +263,61 @@ fn entries(n: usize) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn another_solver_gives_another_key() {
+        let setup = serde_json::json!({"section": [[0.0, 0.0], [0.1, 0.05]], "c0": 40.0});
+        let study = StudyPlan::default();
+        let a = key_with(&setup, &study, "aaaa").unwrap();
+        assert_eq!(
+            a,
+            key_with(&setup, &study, "aaaa").unwrap(),
+            "deterministic"
+        );
+        assert_ne!(
+            a,
+            key_with(&setup, &study, "aaab").unwrap(),
+            "solver sources"
+        );
+        let other = serde_json::json!({"section": [[0.0, 0.0], [0.1, 0.05]], "c0": 41.0});
+        assert_ne!(a, key_with(&other, &study, "aaaa").unwrap(), "setup");
+        assert_eq!(a.len(), 64);
+    }
+
+    #[test]
+    fn a_record_is_reused_only_while_its_checksum_holds() {
+        let record =
+            serde_json::json!({"key": "k", "force_peak_n_per_m": 3300.5, "sensors": [1.25e3]});
+        let text = stored_text(&record).unwrap();
+        let head: serde_json::Value = serde_json::from_str(&text).unwrap();
+        assert_eq!(
+            head["record"], record,
+            "event.json is JSON holding the record"
+        );
+        assert_eq!(verify::<serde_json::Value>(&text), Ok(record.clone()));
+        // A well-formed number changed by hand.
+        let tampered = text.replace("3300.5", "330050.0");
+        let why = verify::<serde_json::Value>(&tampered).unwrap_err();
+        assert!(why.contains("does not match its checksum"), "{why}");
+        // A record of an earlier format (no checksum), and one that is not JSON.
+        let why = verify::<serde_json::Value>(&record.to_string()).unwrap_err();
+        assert!(why.contains("no checksum"), "{why}");
+        assert!(verify::<serde_json::Value>("{\"sha256\": ").is_err());
+        // Through the cache folder: the entry is rejected with a message naming the file.
+        let out = tempfile::tempdir().unwrap();
+        std::fs::create_dir_all(entry(out.path(), "k")).unwrap();
+        std::fs::write(entry(out.path(), "k").join(RECORD), &tampered).unwrap();
+        let note = rejection(out.path(), "k").unwrap();
+        assert!(
+            note.contains("event.json") && note.contains("computed again"),
+            "{note}"
+        );
+        assert!(lookup(out.path(), "k").is_none());
+        assert!(
+            rejection(out.path(), "none").is_none(),
+            "a missing entry is no rejection"
+        );
+    }
 
     #[test]
     fn entries_the_assessment_did_not_use_are_counted_and_pruned_only_when_asked() {

@@ -367,6 +367,13 @@ pub fn run(
             }
         })
         .collect();
+    // Cache records whose checksum fails are computed again, and the assessment says so.
+    let rejected: Vec<(usize, String)> = jobs
+        .iter()
+        .filter(|j| j.cached.is_none() && s.use_cache)
+        .filter_map(|j| cache::rejection(out, &j.setup.as_ref().ok()?.1).map(|m| (j.event, m)))
+        .collect();
+    rejected.iter().for_each(|r| progress.note(&r.1));
     let threads = s.threads.unwrap_or_else(rayon::current_num_threads).max(1);
     let cost = cost_of(&jobs, s.study, threads);
     if !jobs.is_empty() {
@@ -428,6 +435,7 @@ pub fn run(
     for (i, e) in plan.events.iter().enumerate() {
         let mut warnings = Vec::new();
         warnings.extend(analytic_errors[i].clone());
+        warnings.extend(rejected.iter().filter(|r| r.0 == i).map(|r| r.1.clone()));
         let (sph, failed) = match sph_of[i].take() {
             Some(Ok(r)) => {
                 if let Some(why) = &r.stopped_early {

@@ -1,8 +1,10 @@
 //! Ochi's (1958) published trends and Veen's (2010) numbers for the Ochi V-form (s. 6.3), beside an
 //! assessment of the reconstructed hull. Ochi's peak pressures were published as figures only and are not
 //! available; the trends are qualitative (data/reference/ochi1958_vform.toml, `[published_findings]`).
-//! Each check uses the per-event sensor peaks the assessment reports: SPH where an SPH run was made,
-//! otherwise the analytic (MLM) estimate; the detail says which.
+//! Each check is a function of the design values the assessment reports (per station, or per event
+//! through [`EventResult::sensor_peak`]), whatever rule computes them, and is the one implementation both
+//! the design report and `slamtool validate` (src/validate/ochi_trends.rs) use, so the two reports give
+//! the same verdict on the same assessment.
 
 use super::comparisons::{Comparison, OCHI, TrendCheck, Validation, reference_number, sensor_peak};
 use super::results::{Assessment, EventResult, StationResult};
@@ -13,7 +15,7 @@ const SOURCE: &str = "Ochi (1958), findings as reported by Veen (2010) s. 6.3 \
 const VEEN: &str = "Veen (2010) s. 6.3, 2D SPH with SEAWAY relative motion \
 (data/reference/ochi1958_vform.toml [veen2010_sph])";
 
-fn same(a: f64, b: f64) -> bool {
+pub(crate) fn same(a: f64, b: f64) -> bool {
     (a - b).abs() < 1e-6
 }
 
@@ -24,8 +26,344 @@ fn by_girth(st: &StationResult) -> Vec<&str> {
     s.iter().map(|q| q.name.as_str()).collect()
 }
 
-fn verdict(ok: bool) -> &'static str {
-    if ok { "reproduced" } else { "not reproduced" }
+/// What a trend check finds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Found {
+    Reproduced,
+    NotReproduced,
+    /// Too few stations or speeds with a pressure to tell.
+    NotAssessed,
+}
+
+impl Found {
+    fn of(ok: bool) -> Self {
+        if ok {
+            Found::Reproduced
+        } else {
+            Found::NotReproduced
+        }
+    }
+
+    /// The verdict as both reports print it.
+    pub fn label(self) -> &'static str {
+        match self {
+            Found::Reproduced => "reproduced",
+            Found::NotReproduced => "not reproduced",
+            Found::NotAssessed => "not assessed",
+        }
+    }
+}
+
+/// Ochi's "the maximum pressure is near the keel", station by station: the largest design pressure of
+/// each station with a positive one ([`StationResult::design_pressure_pa`], whatever rule the assessment
+/// uses for it) and the station's keel sensor (the sensor of least girth).
+#[derive(Debug, Clone, Default)]
+pub struct KeelTrend {
+    /// (station, sensor with the largest design pressure, its value in Pa, its source, keel sensor).
+    pub rows: Vec<(f64, String, f64, &'static str, String)>,
+}
+
+impl KeelTrend {
+    pub fn of(a: &Assessment) -> Self {
+        let mut rows = Vec::new();
+        for st in &a.stations {
+            let best = st
+                .design_pressure_pa
+                .iter()
+                .max_by(|p, q| p.value.total_cmp(&q.value));
+            let keel = by_girth(st).first().map(|k| k.to_string());
+            if let Some(b) = best
+                && b.value > 0.0
+            {
+                let keel = keel.unwrap_or_else(|| st.design_pressure_pa[0].name.clone());
+                rows.push((st.station, b.name.clone(), b.value, b.source, keel));
+            }
+        }
+        KeelTrend { rows }
+    }
+
+    /// Stations whose largest design pressure is on the keel sensor, over the stations counted.
+    pub fn fraction(&self) -> Option<f64> {
+        let keel = self.rows.iter().filter(|r| r.1 == r.4).count();
+        (!self.rows.is_empty()).then(|| keel as f64 / self.rows.len() as f64)
+    }
+
+    pub fn found(&self) -> Found {
+        match self.fraction() {
+            None => Found::NotAssessed,
+            Some(f) => Found::of(f >= 1.0),
+        }
+    }
+
+    /// The stations where the largest design pressure is not on the keel sensor, with the numbers.
+    pub fn off_keel(&self) -> String {
+        let v: Vec<String> = self
+            .rows
+            .iter()
+            .filter(|r| r.1 != r.4)
+            .map(|r| {
+                format!(
+                    "{} Lpp ({} {:.2} kPa, {}; keel sensor {})",
+                    r.0,
+                    r.1,
+                    r.2 / 1e3,
+                    r.3,
+                    r.4
+                )
+            })
+            .collect();
+        if v.is_empty() {
+            "no station".into()
+        } else {
+            v.join(", ")
+        }
+    }
+
+    pub fn detail(&self) -> String {
+        self.rows
+            .iter()
+            .map(|r| {
+                format!(
+                    "station {}: largest {} {:.2} kPa ({}), keel sensor {}",
+                    r.0,
+                    r.1,
+                    r.2 / 1e3,
+                    r.3,
+                    r.4
+                )
+            })
+            .collect::<Vec<_>>()
+            .join("; ")
+    }
+}
+
+/// Ochi's "increasing forward speed moves the location of the maximum pressure aft": per speed, the
+/// station of the largest per-event design sensor peak ([`EventResult::sensor_peak`]). The trend is
+/// reproduced when the location never moves forward from one speed to the next and ends aft of where it
+/// started by at least half the smallest spacing of the assessed stations: a location that does not move
+/// is not the trend.
+#[derive(Debug, Clone, Default)]
+pub struct SpeedTrend {
+    /// (speed m/s, station of the largest peak, the peak in Pa, its source).
+    pub track: Vec<(f64, f64, f64, &'static str)>,
+    /// The smallest spacing of the assessed stations (fraction of Lpp).
+    pub spacing: f64,
+}
+
+/// A per-event sensor peak (Pa) and its source.
+pub type PeakOf<'a> = &'a dyn Fn(&EventResult, &str) -> Option<(f64, &'static str)>;
+
+impl SpeedTrend {
+    /// The trend of the assessment's per-event design values ([`EventResult::sensor_peak`]).
+    pub fn of(a: &Assessment) -> Self {
+        Self::of_peaks(a, &|e, n| e.sensor_peak(n))
+    }
+
+    /// The trend of the analytic estimates alone, for the diagnosis of a difference.
+    pub fn of_analytic(a: &Assessment) -> Self {
+        Self::of_peaks(a, &|e, n| {
+            let an = e.analytic.as_ref()?;
+            an.sensors
+                .iter()
+                .find(|q| q.name == n)
+                .map(|q| (q.peak_pa, "analytic"))
+        })
+    }
+
+    /// The trend of the per-event peaks `peak` gives.
+    pub fn of_peaks(a: &Assessment, peak: PeakOf) -> Self {
+        let mut speeds: Vec<f64> = a.events.iter().map(|e| e.speed_m_per_s).collect();
+        speeds.sort_by(f64::total_cmp);
+        speeds.dedup_by(|p, q| same(*p, *q));
+        let mut track = Vec::new();
+        for &u in &speeds {
+            let mut best: Option<(f64, f64, &'static str)> = None;
+            for e in a.events.iter().filter(|e| same(e.speed_m_per_s, u)) {
+                for st in a.stations.iter().filter(|s| same(s.station, e.station)) {
+                    for q in &st.sensors {
+                        if let Some((p, src)) = peak(e, &q.name)
+                            && p > 0.0
+                            && best.is_none_or(|b| p > b.1)
+                        {
+                            best = Some((e.station, p, src));
+                        }
+                    }
+                }
+            }
+            if let Some((f, p, src)) = best {
+                track.push((u, f, p, src));
+            }
+        }
+        let mut st: Vec<f64> = a.stations.iter().map(|s| s.station).collect();
+        st.sort_by(f64::total_cmp);
+        let spacing = st
+            .windows(2)
+            .map(|w| w[1] - w[0])
+            .filter(|d| *d > 1e-9)
+            .fold(f64::INFINITY, f64::min);
+        SpeedTrend { track, spacing }
+    }
+
+    /// The largest forward move between consecutive speeds (fraction of Lpp, positive), if any.
+    pub fn forward_step(&self) -> Option<(f64, f64, f64, f64, f64)> {
+        self.track
+            .windows(2)
+            .filter(|w| w[1].1 < w[0].1 - 1e-9)
+            .map(|w| (w[0].1 - w[1].1, w[0].0, w[0].1, w[1].0, w[1].1))
+            .max_by(|p, q| p.0.total_cmp(&q.0))
+    }
+
+    /// The measure both reports judge: the shift aft from the lowest to the highest speed, or, where the
+    /// location moves forward between two consecutive speeds, minus the largest such move.
+    pub fn measure(&self) -> Option<f64> {
+        if self.track.len() < 2 {
+            return None;
+        }
+        Some(match self.forward_step() {
+            Some(f) => -f.0,
+            None => self.track[self.track.len() - 1].1 - self.track[0].1,
+        })
+    }
+
+    /// The least measure that counts as the trend: half the smallest station spacing.
+    pub fn least_shift(&self) -> f64 {
+        if self.spacing.is_finite() {
+            0.5 * self.spacing
+        } else {
+            f64::INFINITY
+        }
+    }
+
+    pub fn found(&self) -> Found {
+        match self.measure() {
+            None => Found::NotAssessed,
+            Some(m) => Found::of(m >= self.least_shift()),
+        }
+    }
+
+    /// What the track shows, in words with its numbers.
+    pub fn finding(&self) -> String {
+        let (Some(first), Some(last)) = (self.track.first(), self.track.last()) else {
+            return "fewer than two speeds have a pressure".into();
+        };
+        if let Some((d, u0, f0, u1, f1)) = self.forward_step() {
+            return format!(
+                "the location moves forward by {d:.3} Lpp, from station {f0} at {u0} m/s to station {f1} \
+                 at {u1} m/s"
+            );
+        }
+        if same(first.1, last.1) {
+            return format!(
+                "the location stays at station {} from {} to {} m/s",
+                first.1, first.0, last.0
+            );
+        }
+        format!(
+            "the location moves aft from station {} at {} m/s to station {} at {} m/s",
+            first.1, first.0, last.1, last.0
+        )
+    }
+
+    pub fn detail(&self) -> String {
+        self.track
+            .iter()
+            .map(|(u, f, p, src)| format!("{u} m/s: station {f} ({:.2} kPa, {src})", p / 1e3))
+            .collect::<Vec<_>>()
+            .join("; ")
+    }
+}
+
+/// Ochi's "at 2.2 m/s the peak pressure falls from the keel sensor towards the chine at the foremost
+/// sections", on the two foremost stations: each sensor's largest per-event design peak at 2.2 m/s,
+/// keel first.
+#[derive(Debug, Clone, Default)]
+pub struct ForeTrend {
+    /// (station, its sensor peaks from the keel up).
+    pub rows: Vec<(f64, Vec<SensorPeak>)>,
+}
+
+/// A sensor's name, its peak (Pa) and the peak's source.
+pub type SensorPeak = (String, f64, &'static str);
+
+/// The speed of Ochi's finding on the foremost sections (m/s).
+pub const FORE_SPEED: f64 = 2.2;
+
+impl ForeTrend {
+    pub fn of(a: &Assessment) -> Self {
+        let mut fore: Vec<&StationResult> = a.stations.iter().collect();
+        fore.sort_by(|p, q| p.station.total_cmp(&q.station));
+        fore.truncate(2);
+        let mut rows = Vec::new();
+        for st in fore {
+            let evs: Vec<&EventResult> = a
+                .events
+                .iter()
+                .filter(|e| same(e.station, st.station) && same(e.speed_m_per_s, FORE_SPEED))
+                .collect();
+            let peaks: Vec<SensorPeak> = by_girth(st)
+                .iter()
+                .filter_map(|n| sensor_peak(&evs, n).map(|(p, src)| (n.to_string(), p, src)))
+                .collect();
+            if peaks.len() >= 2 {
+                rows.push((st.station, peaks));
+            }
+        }
+        ForeTrend { rows }
+    }
+
+    fn falls(peaks: &[SensorPeak]) -> bool {
+        peaks.windows(2).all(|w| w[1].1 <= w[0].1)
+    }
+
+    /// The stations whose peaks fall from the keel up, over the stations counted.
+    pub fn fraction(&self) -> Option<f64> {
+        let ok = self.rows.iter().filter(|r| Self::falls(&r.1)).count();
+        (!self.rows.is_empty()).then(|| ok as f64 / self.rows.len() as f64)
+    }
+
+    pub fn found(&self) -> Found {
+        match self.fraction() {
+            None => Found::NotAssessed,
+            Some(f) => Found::of(f >= 1.0),
+        }
+    }
+
+    fn row_text(r: &(f64, Vec<SensorPeak>)) -> String {
+        format!(
+            "station {}: {} kPa",
+            r.0,
+            r.1.iter()
+                .map(|(n, p, src)| format!("{n} {:.2} ({src})", p / 1e3))
+                .collect::<Vec<_>>()
+                .join(", ")
+        )
+    }
+
+    /// The stations whose peaks do not fall from the keel up, with the numbers.
+    pub fn rising(&self) -> String {
+        let v: Vec<String> = self
+            .rows
+            .iter()
+            .filter(|r| !Self::falls(&r.1))
+            .map(Self::row_text)
+            .collect();
+        if v.is_empty() {
+            "no station".into()
+        } else {
+            v.join("; ")
+        }
+    }
+
+    pub fn detail(&self) -> String {
+        if self.rows.is_empty() {
+            return format!("{FORE_SPEED} m/s not assessed, or no emerging event there");
+        }
+        self.rows
+            .iter()
+            .map(Self::row_text)
+            .collect::<Vec<_>>()
+            .join("; ")
+    }
 }
 
 /// The trend checks and comparisons of an Ochi V-form assessment.
@@ -33,126 +371,37 @@ pub fn ochi(a: &Assessment) -> Result<Validation> {
     let mut out = Validation::default();
     out.notes.push(
         "Ochi's (1958) measured peak pressures were published as figures only and are not available to \
-         this tool: only his qualitative findings are checked"
+         this tool: only his qualitative findings are checked, by the same functions as `slamtool \
+         validate` (cases ochi1958-keel-trend, ochi1958-speed-trend, ochi1958-fore-trend)"
             .into(),
     );
-    // (a) the maximum pressure is near the keel
-    let mut rows = Vec::new();
-    let mut ok = true;
-    for st in &a.stations {
-        let order = by_girth(st);
-        let best = st
-            .design_pressure_pa
-            .iter()
-            .max_by(|p, q| p.value.total_cmp(&q.value));
-        if let (Some(b), Some(keel)) = (best, order.first())
-            && b.value > 0.0
-        {
-            ok &= b.name == *keel;
-            rows.push(format!(
-                "station {}: largest {} {:.2} kPa ({}), keel sensor {}",
-                st.station,
-                b.name,
-                b.value / 1e3,
-                b.source,
-                keel
-            ));
-        }
-    }
+    let keel = KeelTrend::of(a);
     out.trend_checks.push(TrendCheck {
         check: "the maximum pressure is at the keel sensor of each station (design pressures)"
             .into(),
-        verdict: if rows.is_empty() {
-            "not assessed"
-        } else {
-            verdict(ok)
-        },
-        detail: rows.join("; "),
+        verdict: keel.found().label(),
+        detail: keel.detail(),
         source: SOURCE.into(),
     });
-    // (b) the location of the maximum moves aft with speed
-    let mut speeds: Vec<f64> = a.events.iter().map(|e| e.speed_m_per_s).collect();
-    speeds.dedup_by(|p, q| same(*p, *q));
-    speeds.sort_by(f64::total_cmp);
-    speeds.dedup_by(|p, q| same(*p, *q));
-    let mut track: Vec<(f64, f64, f64, &str)> = Vec::new();
-    for &u in &speeds {
-        let mut best: Option<(f64, f64, &str)> = None;
-        for e in a.events.iter().filter(|e| same(e.speed_m_per_s, u)) {
-            for st in a.stations.iter().filter(|s| same(s.station, e.station)) {
-                for q in &st.sensors {
-                    if let Some((p, src)) = e.sensor_peak(&q.name)
-                        && best.is_none_or(|b| p > b.1)
-                    {
-                        best = Some((e.station, p, src));
-                    }
-                }
-            }
-        }
-        if let Some((f, p, src)) = best {
-            track.push((u, f, p, src));
-        }
-    }
-    let moves_aft = track.len() >= 2
-        && track.windows(2).all(|w| w[1].1 >= w[0].1 - 1e-9)
-        && track[track.len() - 1].1 > track[0].1;
+    let speed = SpeedTrend::of(a);
     out.trend_checks.push(TrendCheck {
-        check:
-            "the station of the maximum pressure moves aft (larger fraction of Lpp) as speed rises"
-                .into(),
-        verdict: if track.len() < 2 {
-            "not assessed"
-        } else {
-            verdict(moves_aft)
-        },
-        detail: track
-            .iter()
-            .map(|(u, f, p, src)| format!("{u} m/s: station {f} ({:.2} kPa, {src})", p / 1e3))
-            .collect::<Vec<_>>()
-            .join("; "),
+        check: format!(
+            "the station of the maximum pressure moves aft (larger fraction of Lpp) as speed rises: never \
+             forward between two speeds, and at least {:.3} Lpp (half the station spacing) aft overall",
+            speed.least_shift()
+        ),
+        verdict: speed.found().label(),
+        detail: format!("{}: {}", speed.finding(), speed.detail()),
         source: SOURCE.into(),
     });
-    // (c) at 2.2 m/s the peak falls from keel to chine at the foremost stations
-    let mut fore: Vec<&StationResult> = a.stations.iter().collect();
-    fore.sort_by(|p, q| p.station.total_cmp(&q.station));
-    fore.truncate(2);
-    let mut rows = Vec::new();
-    let mut ok = true;
-    for st in &fore {
-        let evs: Vec<&EventResult> = a
-            .events
-            .iter()
-            .filter(|e| same(e.station, st.station) && same(e.speed_m_per_s, 2.2))
-            .collect();
-        let peaks: Vec<(String, f64)> = by_girth(st)
-            .iter()
-            .filter_map(|n| {
-                sensor_peak(&evs, n).map(|(p, src)| (format!("{n} {:.2} ({src})", p / 1e3), p))
-            })
-            .collect();
-        if peaks.len() >= 2 {
-            ok &= peaks.windows(2).all(|w| w[1].1 <= w[0].1);
-            rows.push(format!(
-                "station {}: {} kPa",
-                st.station,
-                peaks
-                    .iter()
-                    .map(|p| p.0.as_str())
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            ));
-        }
-    }
+    let fore = ForeTrend::of(a);
     out.trend_checks.push(TrendCheck {
-        check: "at 2.2 m/s the peak pressure falls from the keel sensor to the chine at the two foremost \
-                stations"
-            .into(),
-        verdict: if rows.is_empty() { "not assessed" } else { verdict(ok) },
-        detail: if rows.is_empty() {
-            "2.2 m/s not assessed, or no emerging event there".into()
-        } else {
-            rows.join("; ")
-        },
+        check: format!(
+            "at {FORE_SPEED} m/s the peak pressure falls from the keel sensor to the chine at the two \
+             foremost stations"
+        ),
+        verdict: fore.found().label(),
+        detail: fore.detail(),
         source: SOURCE.into(),
     });
     // (d) Veen's P2 keel pressure and entry speeds at 2.0 m/s
@@ -206,4 +455,80 @@ pub fn ochi(a: &Assessment) -> Result<Validation> {
         });
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn speed(track: &[(f64, f64)]) -> SpeedTrend {
+        SpeedTrend {
+            track: track.iter().map(|&(u, f)| (u, f, 1e3, "sph")).collect(),
+            spacing: 0.04,
+        }
+    }
+
+    #[test]
+    fn a_location_that_does_not_move_is_not_the_speed_trend() {
+        let stays = speed(&[(1.2, 0.133), (2.0, 0.133), (2.8, 0.133)]);
+        assert_eq!(stays.measure(), Some(0.0));
+        assert_eq!(stays.found(), Found::NotReproduced);
+        assert!(stays.finding().contains("stays"), "{}", stays.finding());
+        let aft = speed(&[(1.2, 0.133), (2.0, 0.133), (2.8, 0.174)]);
+        assert!((aft.measure().unwrap() - 0.041).abs() < 1e-9);
+        assert_eq!(aft.found(), Found::Reproduced);
+        // Aft overall but forward in between: the forward move decides.
+        let back = speed(&[(1.2, 0.133), (1.6, 0.174), (2.4, 0.133), (2.8, 0.174)]);
+        assert!((back.measure().unwrap() + 0.041).abs() < 1e-9);
+        assert_eq!(back.found(), Found::NotReproduced);
+        assert!(back.finding().contains("forward"), "{}", back.finding());
+        assert_eq!(speed(&[(1.2, 0.133)]).found(), Found::NotAssessed);
+    }
+
+    #[test]
+    fn the_keel_trend_needs_every_station_on_its_keel_sensor() {
+        let row =
+            |f: f64, best: &str, keel: &str| (f, best.to_string(), 3e3, "sph", keel.to_string());
+        let all = KeelTrend {
+            rows: vec![row(0.093, "S1", "S1"), row(0.133, "T1", "T1")],
+        };
+        assert_eq!(all.found(), Found::Reproduced);
+        assert_eq!(all.off_keel(), "no station");
+        let one_off = KeelTrend {
+            rows: vec![row(0.093, "S2", "S1"), row(0.133, "T1", "T1")],
+        };
+        assert_eq!(one_off.fraction(), Some(0.5));
+        assert_eq!(one_off.found(), Found::NotReproduced);
+        assert!(one_off.off_keel().starts_with("0.093 Lpp (S2 3.00 kPa"));
+        assert_eq!(KeelTrend::default().found(), Found::NotAssessed);
+    }
+
+    #[test]
+    fn the_fore_trend_needs_peaks_falling_from_the_keel_up() {
+        let peaks = |v: &[f64]| -> Vec<SensorPeak> {
+            v.iter()
+                .enumerate()
+                .map(|(i, p)| (format!("S{}", i + 1), *p, "analytic"))
+                .collect()
+        };
+        let falls = ForeTrend {
+            rows: vec![
+                (0.093, peaks(&[4.0, 3.0, 2.0])),
+                (0.133, peaks(&[5.0, 5.0, 1.0])),
+            ],
+        };
+        assert_eq!(falls.found(), Found::Reproduced);
+        let rises = ForeTrend {
+            rows: vec![
+                (0.093, peaks(&[2.4, 3.2, 3.6])),
+                (0.133, peaks(&[5.0, 1.0])),
+            ],
+        };
+        assert_eq!(rises.fraction(), Some(0.5));
+        assert!(
+            rises.rising().starts_with("station 0.093"),
+            "{}",
+            rises.rising()
+        );
+    }
 }

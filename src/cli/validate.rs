@@ -23,7 +23,7 @@ pub struct ValidateArgs {
     /// Coarse resolution, for CI (the default).
     #[arg(long, conflicts_with = "full")]
     quick: bool,
-    /// Converged resolution (long: tens of minutes).
+    /// Each case at its finer resolution (long: tens of minutes); not a claim of convergence.
     #[arg(long)]
     full: bool,
     /// Run only these cases (file names in the cases folder without `.toml`); repeat or comma-separate.
@@ -74,14 +74,18 @@ pub fn run(a: ValidateArgs) -> Result<()> {
     std::fs::create_dir_all(&a.out).map_err(|e| Error::io(&a.out, e))?;
     let mut inputs: Vec<PathBuf> = selected.clone();
     for c in &cases {
-        inputs.extend(c.reference_files.iter().cloned());
+        inputs.extend(c.input_files());
     }
     inputs.sort();
     inputs.dedup();
     let input_refs: Vec<&std::path::Path> = inputs.iter().map(PathBuf::as_path).collect();
     let prov = Provenance::new(
         &input_refs,
-        serde_json::json!({"mode": mode, "cases": cases.iter().map(|c| &c.name).collect::<Vec<_>>()}),
+        serde_json::json!({
+            "mode": mode,
+            "cases": cases.iter().map(|c| &c.name).collect::<Vec<_>>(),
+            "solver_sources_sha256": slamtool::provenance::SOLVER_SOURCES_SHA256,
+        }),
     )?;
     let total = cases.len();
     let mut k = 0;
@@ -102,6 +106,7 @@ pub fn run(a: ValidateArgs) -> Result<()> {
             "outputs": {"folder": a.out, "files": written},
             "mode": mode,
             "failed": suite.failed(),
+            "tally": report::tally(&suite).into_iter().collect::<std::collections::BTreeMap<_, _>>(),
             "wall_time_s": suite.wall_time_s,
             "summary": report::summary_rows(&suite),
         }));
@@ -136,6 +141,7 @@ pub fn run(a: ValidateArgs) -> Result<()> {
                 r.verdict
             );
         }
+        println!("{}", report::tally_text(&suite));
         println!("wall time {:.0} s", suite.wall_time_s);
         println!("{}", global::files_written_line(&a.out));
     }

@@ -8,12 +8,13 @@
 //! unit = "N"
 //! reference_files = ["../data/reference/zhao1996_wedge30_drop.csv"]
 //! provenance = "Zhao, Faltinsen & Aarsnes (1996), Fig. 15, eye-digitised by a third party"
-//! # known_failure = "why the tolerance is not met, and why that is expected"
+//! # known_failure = "why the tolerance is not met ({computed} against {reference}), and why expected"
 //!
 //! [tolerance]
-//! kind = "relative"                     # relative | absolute | at-most | below-reference | within-range
+//! kind = "relative"     # relative | absolute | at-most | upper-bound | below-reference | within-range
 //! value = 0.10
-//! reason = "written before the result was seen: ..."
+//! reason = "why this tolerance"
+//! stated = "before-results"             # or "after-results", with `revision`: what changed, when, why
 //!
 //! [resolution]                          # SPH cases: particles over the half-beam
 //! quick = 25.0
@@ -22,6 +23,12 @@
 //! [parameters]                          # what the kind needs (numbers, strings, lists of numbers)
 //! deadrise_deg = 30.0
 //! ```
+//!
+//! `known_failure` quotes numbers only as placeholders filled from the run ([`super::known`]); a literal
+//! number in it is refused. `stated` records whether the tolerance and its reason are as written before
+//! any result was seen (`before-results`) or were revised after (`after-results`, with `revision`, as the
+//! git history of the case file shows): the report prints which, never "set before the result was seen"
+//! for a revised one.
 //!
 //! Every problem is reported as `file:line:column: reason`.
 
@@ -41,7 +48,7 @@ use crate::input::SourceText;
 pub enum Mode {
     /// Coarse resolution, for CI.
     Quick,
-    /// Converged resolution, for the committed report.
+    /// Each case at its finer resolution, for the committed report (not a claim of convergence).
     Full,
 }
 
@@ -69,6 +76,28 @@ struct RawTolerance {
     kind: Spanned<String>,
     value: Option<Spanned<f64>>,
     reason: Spanned<String>,
+    stated: Spanned<String>,
+    revision: Option<Spanned<String>>,
+}
+
+/// When a case's tolerance and its reason were written.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+#[serde(tag = "stated", content = "revision", rename_all = "kebab-case")]
+pub enum Stated {
+    /// As written before any result of the case was seen.
+    BeforeResults,
+    /// Revised after results were seen: what changed, when and why.
+    AfterResults(String),
+}
+
+impl Stated {
+    /// The lead of the tolerance's reason in the report.
+    pub fn lead(&self) -> String {
+        match self {
+            Stated::BeforeResults => "Tolerance, set before the result was seen".into(),
+            Stated::AfterResults(r) => format!("Tolerance, revised after results were seen ({r})"),
+        }
+    }
 }
 
 #[derive(Debug, Deserialize)]
@@ -95,6 +124,7 @@ pub struct Case {
     pub notes: Vec<String>,
     pub tolerance: Tolerance,
     pub tolerance_reason: String,
+    pub tolerance_stated: Stated,
     /// Particles over the half-beam at (quick, full).
     pub resolution: Option<(f64, f64)>,
     params: BTreeMap<String, Spanned<toml::Value>>,
@@ -156,6 +186,9 @@ impl Case {
             "at-most" => Tolerance::AtMost {
                 value: value("at-most")?,
             },
+            "upper-bound" => Tolerance::UpperBound {
+                value: value("upper-bound")?,
+            },
             "below-reference" => Tolerance::BelowReference,
             "within-range" => Tolerance::WithinRange,
             other => {
@@ -163,12 +196,36 @@ impl Case {
                     &t.kind,
                     format!(
                         "unknown tolerance kind `{other}`; one of: relative, absolute, at-most, \
-                         below-reference, within-range"
+                         upper-bound, below-reference, within-range"
                     ),
                 )));
             }
         };
         let tolerance_reason = non_empty(&src, &t.reason, "the tolerance's reason")?;
+        let tolerance_stated = match (t.stated.get_ref().as_str(), &t.revision) {
+            ("before-results", None) => Stated::BeforeResults,
+            ("before-results", Some(r)) => {
+                return Err(Error::Input(src.error(
+                    r,
+                    "a `revision` belongs to a tolerance stated \"after-results\"",
+                )));
+            }
+            ("after-results", Some(r)) => {
+                Stated::AfterResults(non_empty(&src, r, "the tolerance's revision")?)
+            }
+            ("after-results", None) => {
+                return Err(Error::Input(src.error(
+                    &t.stated,
+                    "a tolerance revised after results needs `revision`: what changed, when and why",
+                )));
+            }
+            (other, _) => {
+                return Err(Error::Input(src.error(
+                    &t.stated,
+                    format!("`stated` is \"before-results\" or \"after-results\", not `{other}`"),
+                )));
+            }
+        };
         let base = src.path.parent().unwrap_or(Path::new(".")).to_path_buf();
         let mut reference_files = Vec::new();
         for f in &raw.reference_files {
@@ -195,7 +252,19 @@ impl Case {
             None => None,
         };
         let known_failure = match &raw.known_failure {
-            Some(k) => Some(non_empty(&src, k, "known_failure")?),
+            Some(k) => {
+                if let Some((_, n)) = super::known::literal_number(k.get_ref()) {
+                    return Err(Error::Input(src.error(
+                        k,
+                        format!(
+                            "known_failure quotes the number {n} as text: quote the run's numbers as \
+                             placeholders ({{computed}}, {{reference}}, {{error}}, {{tolerance}} or a fact \
+                             of the computation), so that the text cannot go stale"
+                        ),
+                    )));
+                }
+                Some(non_empty(&src, k, "known_failure")?)
+            }
             None => None,
         };
         Ok(Case {
@@ -210,6 +279,7 @@ impl Case {
             notes: raw.notes,
             tolerance,
             tolerance_reason,
+            tolerance_stated,
             resolution,
             params: raw.parameters,
             path: src.path.clone(),
@@ -309,6 +379,22 @@ impl Case {
                     ),
                 ))
             })
+    }
+
+    /// Every file the case reads: its reference files and each text parameter naming an existing file
+    /// (hull, sea state, drop-in data), resolved against the case file's folder.
+    pub fn input_files(&self) -> Vec<PathBuf> {
+        let base = self.path.parent().unwrap_or(Path::new("."));
+        let mut out = self.reference_files.clone();
+        for v in self.params.values() {
+            if let Some(t) = v.get_ref().as_str() {
+                let p = base.join(t);
+                if p.is_file() && !out.contains(&p) {
+                    out.push(p);
+                }
+            }
+        }
+        out
     }
 
     /// Particles over the half-beam for the mode.

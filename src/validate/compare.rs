@@ -1,8 +1,8 @@
 //! Comparison of a computed quantity with its reference under the tolerance stated in the case file,
 //! and the verdict that follows.
 //!
-//! The tolerance is written in the case file with its reason before the result is seen; nothing here
-//! widens it. A case whose reference is not available (pending data) gets the verdict
+//! The tolerance is written in the case file with its reason (and whether it was revised after results
+//! were seen, [`super::case::Stated`]); nothing here widens it. A case whose reference is not available (pending data) gets the verdict
 //! [`Verdict::Pending`], which is neither a pass nor a failure.
 
 use serde::Serialize;
@@ -17,6 +17,9 @@ pub enum Tolerance {
     Absolute { value: f64 },
     /// computed <= value (in the case's unit); the reference is the ideal value shown beside it.
     AtMost { value: f64 },
+    /// computed <= value, a one-sided bound of theory: any value below it passes, however far below
+    /// (shown as such in every table, so a pass is not read as agreement).
+    UpperBound { value: f64 },
     /// computed < reference (e.g. an error that must fall as the particle spacing is refined).
     BelowReference,
     /// lower <= computed <= upper, the bounds given by the reference (theory).
@@ -88,9 +91,10 @@ pub fn assess(computed: f64, reference: &Reference, tol: Tolerance) -> (Option<f
             let e = computed - value;
             (Some(e), Some(e.abs() <= t))
         }
-        (Reference::Value { value }, Tolerance::AtMost { value: t }) => {
-            (Some(computed - value), Some(computed <= t))
-        }
+        (
+            Reference::Value { value },
+            Tolerance::AtMost { value: t } | Tolerance::UpperBound { value: t },
+        ) => (Some(computed - value), Some(computed <= t)),
         (Reference::Value { value }, Tolerance::BelowReference) => {
             (Some(computed - value), Some(computed < *value))
         }
@@ -125,6 +129,9 @@ pub fn tolerance_text(tol: Tolerance, unit: &str) -> String {
         Tolerance::Relative { value } => format!("±{} %", trim(value * 100.0)),
         Tolerance::Absolute { value } => format!("±{} {unit}", trim(value)),
         Tolerance::AtMost { value } => format!("≤ {} {unit}", trim(value)),
+        Tolerance::UpperBound { value } => {
+            format!("≤ {} {unit} (one-sided bound)", trim(value))
+        }
         Tolerance::BelowReference => "< reference".into(),
         Tolerance::WithinRange => "within range".into(),
     }
@@ -172,6 +179,12 @@ mod tests {
         assert_eq!(assess(109.0, &r, t).1, Some(true));
         assert_eq!(assess(111.0, &r, t).1, Some(false));
         assert_eq!(assess(f64::NAN, &r, t).1, Some(false));
+        // A one-sided bound passes far below its value, and says it is one-sided.
+        let one = Reference::Value { value: 1.0 };
+        let ub = Tolerance::UpperBound { value: 1.0 };
+        assert_eq!(assess(0.5, &one, ub).1, Some(true));
+        assert_eq!(assess(1.01, &one, ub).1, Some(false));
+        assert!(tolerance_text(ub, "-").contains("one-sided"));
         let range = Reference::Range {
             lower: 0.4,
             upper: 1.0,

@@ -1,12 +1,14 @@
 //! The validation report as a document ([`crate::report::document`]), typeset to `validation.pdf`.
 //!
-//! Front page: one table, one row per case (quantity, computed, reference, error, tolerance, verdict).
+//! Front page: the tally of verdicts under the title (pass, pass of a known failure, known failure,
+//! pending data, fail, error, zeros included), then one table, one row per case (quantity, computed,
+//! reference, error, tolerance, verdict).
 //! Then one section per case: verdict, numbers, tolerance and its reason, known failure or pending data,
 //! provenance, notes, wall time, the table of numbers and the overlay plots.
 
 use super::compare::Reference;
-use super::report::{summary_row, summary_rows};
-use super::{Mode, Suite, plot};
+use super::report::{case_inputs, mode_text, summary_row, summary_rows, tally_text};
+use super::{Suite, plot};
 use crate::error::Result;
 use crate::report::document::{Block, Document};
 
@@ -21,10 +23,7 @@ pub struct Outline {
 
 /// The outline of the report of a suite; `commit` is the tool's git commit.
 pub fn outline(s: &Suite, commit: &str) -> Result<Outline> {
-    let mode = match s.mode {
-        Mode::Quick => "quick (coarse resolution, for CI)",
-        Mode::Full => "full (converged resolution)",
-    };
+    let mode = mode_text(s.mode);
     let mut blocks = vec![Block::Table {
         caption: "Validation summary: one row per case".into(),
         header: [
@@ -86,7 +85,8 @@ pub fn outline(s: &Suite, commit: &str) -> Result<Outline> {
         }
         blocks.push(Block::KeyValue(kv));
         blocks.push(Block::Paragraph(format!(
-            "Tolerance, set before the result was seen: {}",
+            "{}: {}",
+            c.tolerance_stated.lead(),
             c.tolerance_reason
         )));
         if let Some(k) = &c.known_failure {
@@ -95,11 +95,8 @@ pub fn outline(s: &Suite, commit: &str) -> Result<Outline> {
         if let Some(Reference::Pending { reason }) = &c.reference {
             blocks.push(Block::Paragraph(format!("Pending data: {reason}")));
         }
-        blocks.push(Block::Paragraph(format!(
-            "Provenance: {} (files: {}).",
-            c.provenance,
-            c.reference_files.join(", ")
-        )));
+        blocks.push(Block::Paragraph(format!("Provenance: {}.", c.provenance)));
+        blocks.push(Block::List(case_inputs(c)));
         if !c.notes.is_empty() {
             blocks.push(Block::List(c.notes.clone()));
         }
@@ -124,11 +121,8 @@ pub fn outline(s: &Suite, commit: &str) -> Result<Outline> {
     Ok(Outline {
         title: "slamtool validation report".into(),
         subtitle: vec![
-            format!(
-                "Mode: {mode}; {} cases; wall time {:.0} s",
-                s.cases.len(),
-                s.wall_time_s
-            ),
+            format!("Mode: {mode}; wall time {:.0} s", s.wall_time_s),
+            tally_text(s),
             format!("slamtool {}, commit {commit}", env!("CARGO_PKG_VERSION")),
         ],
         footer: "slamtool validation report".into(),

@@ -1,6 +1,7 @@
 //! Wedge drop tests: Zhao, Faltinsen & Aarsnes (1996) 30 deg wedge with the measured velocity imposed
 //! and in free drop, and Yettou, Desrochers & Champoux (2006) 25 deg free drop.
 
+use super::conditions::WATER_DENSITY;
 use super::run::{Memo, csv_rows};
 use super::{Case, Figure, Mode, Outcome, Reference, Series, Table};
 use crate::analytic::wagner;
@@ -130,6 +131,7 @@ pub fn zhao_prescribed(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcome> 
         points: force.iter().map(|r| [r[0], r[1]]).collect(),
     });
     Ok(Outcome {
+        facts: Vec::new(),
         computed: peak.value,
         reference: Reference::Value { value: bem_peak },
         table: Some(Table {
@@ -170,7 +172,15 @@ fn drop_against(
         .map(|r| [r[0], r[1]])
         .collect();
     let t: Vec<f64> = rows.iter().map(|r| r[0] * 1e-3).collect();
-    let w = wagner::free_drop_speed(deadrise_deg.to_radians(), 1000.0, mass, v0, 9.81, &t, 1e-6)?;
+    let w = wagner::free_drop_speed(
+        deadrise_deg.to_radians(),
+        WATER_DENSITY,
+        mass,
+        v0,
+        9.81,
+        &t,
+        1e-6,
+    )?;
     let mut worst = (0.0f64, 0.0);
     let mut table = Vec::new();
     for (row, vw) in rows.iter().zip(&w) {
@@ -198,6 +208,7 @@ fn drop_against(
     }
     let tl: Vec<f64> = h.t.iter().map(|t| t * 1e3).collect();
     Ok(Outcome {
+        facts: vec![("worst_at".into(), format!("{} ms", worst.1))],
         computed: worst.0,
         reference: Reference::Value { value: 0.0 },
         table: Some(Table {
@@ -287,7 +298,10 @@ pub fn yettou_drop(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcome> {
         case.number("mass_per_m_kg")?,
         case.number("speed_m_per_s")?,
     );
-    drop_against(case, &r, &vel, deadrise, mass, v0)
+    let mut out = drop_against(case, &r, &vel, deadrise, mass, v0)?;
+    let models = yettou_momentum_models(case)?;
+    out.facts.extend(models.facts);
+    Ok(out)
 }
 
 /// Whether any 2D momentum model d/dt[(M + k m_a) V] = M g, with Wagner's added mass scaled by k from
@@ -316,7 +330,7 @@ pub fn yettou_momentum_models(case: &Case) -> Result<Outcome> {
         let k = k_vk + (1.0 - k_vk) * step as f64 / steps as f64;
         let v = wagner::free_drop_speed_scaled(
             deadrise.to_radians(),
-            1000.0,
+            WATER_DENSITY,
             mass,
             v0,
             9.81,
@@ -344,7 +358,7 @@ pub fn yettou_momentum_models(case: &Case) -> Result<Outcome> {
     for (k, label) in [(k_vk, "von Karman (k = 4/π²)"), (1.0, "Wagner (k = 1)")] {
         let v = wagner::free_drop_speed_scaled(
             deadrise.to_radians(),
-            1000.0,
+            WATER_DENSITY,
             mass,
             v0,
             9.81,
@@ -364,6 +378,11 @@ pub fn yettou_momentum_models(case: &Case) -> Result<Outcome> {
         points: rows.clone(),
     });
     Ok(Outcome {
+        facts: vec![
+            ("closest_model".into(), format!("{:.3} m/s", best.0)),
+            ("closest_k".into(), format!("{:.3}", best.1)),
+            ("compared_until".into(), format!("{until} ms")),
+        ],
         computed: best.0,
         reference: Reference::Value { value: 0.0 },
         table: Some(Table {

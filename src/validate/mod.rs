@@ -10,9 +10,11 @@
 
 pub mod case;
 pub mod compare;
+pub mod conditions;
 pub mod document;
 pub mod drops;
-pub mod ochi_speed;
+pub mod known;
+pub mod ochi_trends;
 pub mod plot;
 pub mod quoted;
 pub mod report;
@@ -25,7 +27,7 @@ use std::time::Instant;
 
 use serde::Serialize;
 
-pub use case::{Case, Mode};
+pub use case::{Case, Mode, Stated};
 pub use compare::{Reference, Tolerance, Verdict};
 
 /// One line or set of markers on a figure.
@@ -64,6 +66,28 @@ pub struct Outcome {
     pub figures: Vec<Figure>,
     /// Findings and caveats worked out during the run (printed in the case's section).
     pub notes: Vec<String>,
+    /// Named numbers of the run, formatted with their units, that a case file's `known_failure` text
+    /// quotes as `{name}` ([`known::explain`]), so that the explanation is made from this run's numbers.
+    pub facts: Vec<(String, String)>,
+}
+
+impl Outcome {
+    /// An outcome with no table, figure, note or fact yet.
+    pub fn new(computed: f64, reference: Reference) -> Self {
+        Outcome {
+            computed,
+            reference,
+            table: None,
+            figures: Vec::new(),
+            notes: Vec::new(),
+            facts: Vec::new(),
+        }
+    }
+
+    /// Record a named number (already formatted, with its unit) for the known-failure text.
+    pub fn fact(&mut self, name: &str, value: impl Into<String>) {
+        self.facts.push((name.to_string(), value.into()));
+    }
 }
 
 /// The result of one case.
@@ -79,10 +103,18 @@ pub struct CaseResult {
     pub error: Option<f64>,
     pub tolerance: Tolerance,
     pub tolerance_reason: String,
+    /// Whether the tolerance is as written before results were seen, or revised after.
+    #[serde(flatten)]
+    pub tolerance_stated: Stated,
     pub verdict: Verdict,
+    /// The known-failure text, made from this run's numbers ([`known`]).
     pub known_failure: Option<String>,
     pub provenance: String,
     pub reference_files: Vec<String>,
+    /// Every file the case reads (reference files, hull, sea state, drop-in data) with its SHA-256.
+    pub inputs: Vec<crate::provenance::InputFile>,
+    /// The physical conditions of the computation: water density, scale ([`conditions`]).
+    pub conditions: Vec<(String, String)>,
     pub notes: Vec<String>,
     pub table: Option<Table>,
     #[serde(skip)]
@@ -113,12 +145,31 @@ pub fn run_case(case: &Case, mode: Mode, memo: &run::Memo) -> CaseResult {
     let outcome = run::run(case, mode, memo);
     let wall_time_s = start.elapsed().as_secs_f64();
     let root = std::env::current_dir().unwrap_or_default();
+    let shown = |p: &std::path::Path| {
+        p.strip_prefix(&root)
+            .unwrap_or(p)
+            .display()
+            .to_string()
+            .replace("\\", "/")
+    };
     let mut notes = case.notes.clone();
-    let (computed, reference, error, verdict, table, figures) = match outcome {
+    let mut known_failure = case.known_failure.as_ref().map(|_| {
+        "(the known-failure text quotes the run's numbers: the computation failed)".into()
+    });
+    let (computed, reference, error, mut verdict, table, figures) = match outcome {
         Ok(o) => {
             notes.extend(o.notes);
             let (error, within) = compare::assess(o.computed, &o.reference, case.tolerance);
-            let v = compare::verdict(within, case.known_failure.is_some());
+            let mut v = compare::verdict(within, case.known_failure.is_some());
+            if let Some(template) = &case.known_failure {
+                match known::text(template, &o.facts, o.computed, &o.reference, error, case, v) {
+                    Ok(t) => known_failure = Some(t),
+                    Err(e) => {
+                        notes.push(e);
+                        v = Verdict::Error;
+                    }
+                }
+            }
             (
                 Some(o.computed),
                 Some(o.reference),
@@ -133,6 +184,19 @@ pub fn run_case(case: &Case, mode: Mode, memo: &run::Memo) -> CaseResult {
             (None, None, None, Verdict::Error, None, Vec::new())
         }
     };
+    let mut inputs = Vec::new();
+    for p in case.input_files() {
+        match std::fs::read(&p) {
+            Ok(bytes) => inputs.push(crate::provenance::InputFile {
+                path: shown(&p),
+                sha256: crate::provenance::sha256_hex(&bytes),
+            }),
+            Err(e) => {
+                notes.push(format!("input {} cannot be read: {e}", shown(&p)));
+                verdict = Verdict::Error;
+            }
+        }
+    }
     CaseResult {
         name: case.name.clone(),
         title: case.title.clone(),
@@ -144,20 +208,13 @@ pub fn run_case(case: &Case, mode: Mode, memo: &run::Memo) -> CaseResult {
         error,
         tolerance: case.tolerance,
         tolerance_reason: case.tolerance_reason.clone(),
+        tolerance_stated: case.tolerance_stated.clone(),
         verdict,
-        known_failure: case.known_failure.clone(),
+        known_failure,
         provenance: case.provenance.clone(),
-        reference_files: case
-            .reference_files
-            .iter()
-            .map(|p| {
-                p.strip_prefix(&root)
-                    .unwrap_or(p)
-                    .display()
-                    .to_string()
-                    .replace("\\", "/")
-            })
-            .collect(),
+        reference_files: case.reference_files.iter().map(|p| shown(p)).collect(),
+        inputs,
+        conditions: conditions::of(case),
         notes,
         table,
         figures,

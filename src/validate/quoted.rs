@@ -2,6 +2,7 @@
 //! (`data/reference/veen2010_quoted_results.toml`): Breder (2005) constant-speed panels and Whelan (2004)
 //! free drops.
 
+use super::conditions::WATER_DENSITY;
 use super::run::{Memo, lookup, toml_number, toml_table};
 use super::wedges::{chine_wetting_time, filtered_peak};
 use super::{Case, Figure, Mode, Outcome, Reference, Series, Table};
@@ -94,6 +95,7 @@ pub fn breder_load_ratio(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcome
         }
     };
     Ok(Outcome {
+        facts: Vec::new(),
         computed: peaks[0] / peaks[1],
         reference: Reference::Value { value: veen },
         table: Some(Table {
@@ -154,8 +156,10 @@ pub fn whelan_peak_pressure(case: &Case) -> Result<Outcome> {
             "no Whelan (2004) impact speeds at {deg} deg in the reference file"
         )));
     }
-    let p_w = 0.5 * 1000.0 * v_max * v_max * wagner::peak_pressure_coefficient(deg.to_radians())?;
+    let p_w =
+        0.5 * WATER_DENSITY * v_max * v_max * wagner::peak_pressure_coefficient(deg.to_radians())?;
     Ok(Outcome {
+        facts: Vec::new(),
         computed: p_w / 1e3,
         reference: Reference::Pending {
             reason: format!(

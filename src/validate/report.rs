@@ -93,23 +93,68 @@ fn md(x: &str) -> String {
     x.replace('|', "\\|").replace('\n', " ")
 }
 
-/// The report as Markdown: the summary table, then one section per case (verdict, numbers, tolerance
-/// and its reason, known failure, provenance, notes, figures, wall time).
-pub fn markdown(s: &Suite) -> String {
-    let mode = match s.mode {
+/// The mode as the reports state it: `--full` runs each case at its finer resolution, which is not a
+/// claim of convergence (only a convergence case can show that, for its own quantity).
+pub fn mode_text(mode: super::Mode) -> &'static str {
+    match mode {
         super::Mode::Quick => "quick (coarse resolution, for CI)",
-        super::Mode::Full => "full (converged resolution)",
-    };
-    let mut out = format!(
-        "# slamtool validation report\n\nMode: {mode}. Wall time {:.0} s. {} cases: {} pass, {} fail, {} known \
-         failures, {} pending data.\n\n| case | quantity | computed | reference | error | tolerance | verdict |\n\
-         |---|---|---|---|---|---|---|\n",
-        s.wall_time_s,
+        super::Mode::Full => {
+            "full (each case at its finer resolution; convergence is claimed only where a convergence \
+             case shows it)"
+        }
+    }
+}
+
+/// The tally of verdicts: (label, count), every verdict listed, zeros included.
+pub fn tally(s: &Suite) -> Vec<(&'static str, usize)> {
+    use super::Verdict as V;
+    vec![
+        ("pass", count(s, &[V::Pass])),
+        ("pass of a known failure", count(s, &[V::UnexpectedPass])),
+        ("known failure", count(s, &[V::KnownFailure])),
+        ("pending data", count(s, &[V::Pending])),
+        ("fail", count(s, &[V::Fail])),
+        ("error", count(s, &[V::Error])),
+    ]
+}
+
+/// The tally as one line: "30 cases: 20 pass, 1 pass of a known failure, ...".
+pub fn tally_text(s: &Suite) -> String {
+    format!(
+        "{} cases: {}",
         s.cases.len(),
-        count(s, &[super::Verdict::Pass, super::Verdict::UnexpectedPass]),
-        count(s, &[super::Verdict::Fail, super::Verdict::Error]),
-        count(s, &[super::Verdict::KnownFailure]),
-        count(s, &[super::Verdict::Pending]),
+        tally(s)
+            .iter()
+            .map(|(l, n)| format!("{n} {l}"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    )
+}
+
+/// The physical conditions and input files of a case as one line each.
+pub fn case_inputs(c: &CaseResult) -> Vec<String> {
+    let mut out: Vec<String> = c
+        .conditions
+        .iter()
+        .map(|(k, v)| format!("{k}: {v}"))
+        .collect();
+    out.extend(
+        c.inputs
+            .iter()
+            .map(|f| format!("input {} sha256 {}", f.path, f.sha256)),
+    );
+    out
+}
+
+/// The report as Markdown: the tally and the summary table, then one section per case (verdict, numbers,
+/// tolerance and its reason, known failure, provenance, conditions and inputs, notes, figures, wall time).
+pub fn markdown(s: &Suite) -> String {
+    let mut out = format!(
+        "# slamtool validation report\n\nMode: {}. Wall time {:.0} s. {}.\n\n| case | quantity | computed \
+         | reference | error | tolerance | verdict |\n|---|---|---|---|---|---|---|\n",
+        mode_text(s.mode),
+        s.wall_time_s,
+        tally_text(s),
     );
     for r in summary_rows(s) {
         out += &format!(
@@ -131,18 +176,21 @@ pub fn markdown(s: &Suite) -> String {
             "{}: computed {}, reference {}, error {}, tolerance {}.\n\n",
             c.quantity, r.computed, r.reference, r.error, r.tolerance
         );
-        out += &format!("*Tolerance:* {}\n\n", c.tolerance_reason);
+        out += &format!(
+            "*{}:* {}\n\n",
+            c.tolerance_stated.lead(),
+            c.tolerance_reason
+        );
         if let Some(k) = &c.known_failure {
             out += &format!("*Known failure:* {k}\n\n");
         }
         if let Some(Reference::Pending { reason }) = &c.reference {
             out += &format!("*Pending data:* {reason}\n\n");
         }
-        out += &format!(
-            "*Provenance:* {} (files: {}).\n\n",
-            c.provenance,
-            c.reference_files.join(", ")
-        );
+        out += &format!("*Provenance:* {}.\n\n", c.provenance);
+        for n in case_inputs(c) {
+            out += &format!("- {n}\n");
+        }
         for n in &c.notes {
             out += &format!("- {n}\n");
         }
@@ -186,6 +234,7 @@ pub fn write(
         "mode": s.mode,
         "wall_time_s": s.wall_time_s,
         "failed": s.failed(),
+        "tally": tally(s).into_iter().collect::<std::collections::BTreeMap<_, _>>(),
         "summary": summary_rows(s),
         "cases": s.cases,
     });

@@ -4,7 +4,7 @@
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
 
-use super::{Case, Mode, Outcome, drops, ochi_speed, quoted, seakeeping, ships, wedges};
+use super::{Case, Mode, Outcome, drops, ochi_trends, quoted, seakeeping, ships, wedges};
 use crate::error::{Error, Result};
 use crate::sph;
 
@@ -28,6 +28,7 @@ pub const KINDS: &[&str] = &[
     "ochi1958-particulars",
     "ochi1958-trend",
     "ochi1958-speed-trend",
+    "ochi1958-fore-trend",
     "ochi1958-pressures",
     "hermundstad2005-wagner",
     "hermundstad2005-assess",
@@ -120,8 +121,9 @@ pub fn run(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcome> {
         "wigley3-zero-speed-raos" => seakeeping::wigley_zero_speed(case),
         "ochi-vform-period" => seakeeping::ochi_period(case),
         "ochi1958-particulars" => ships::ochi_particulars(case),
-        "ochi1958-trend" => ships::ochi_trend(case, mode, memo),
-        "ochi1958-speed-trend" => ochi_speed::speed_trend(case, memo),
+        "ochi1958-trend" => ochi_trends::keel_trend(case, memo),
+        "ochi1958-speed-trend" => ochi_trends::speed_trend(case, memo),
+        "ochi1958-fore-trend" => ochi_trends::fore_trend(case, memo),
         "ochi1958-pressures" => ships::ochi_pressures(case, memo),
         "hermundstad2005-wagner" => ships::hermundstad_wagner(case),
         "hermundstad2005-assess" => ships::hermundstad_assess(case, memo),

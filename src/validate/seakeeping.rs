@@ -62,6 +62,7 @@ impl Rows {
     }
     fn outcome(self, figures: Vec<Figure>, notes: Vec<String>) -> Outcome {
         Outcome {
+            facts: Vec::new(),
             computed: 100.0 * self.worst,
             reference: Reference::Value { value: 0.0 },
             table: Some(Table {
@@ -305,6 +306,7 @@ pub fn ochi_period(case: &Case) -> Result<Outcome> {
     };
     let measured = toml_number(&r, &["model", key])?;
     Ok(Outcome {
+        facts: Vec::new(),
         computed: coupled,
         reference: Reference::Value { value: measured },
         table: Some(Table {

@@ -7,7 +7,7 @@ use std::path::Path;
 use std::sync::Arc;
 
 use super::run::{Memo, csv_rows, toml_number, toml_table};
-use super::{Case, Figure, Mode, Outcome, Reference, Series, Table};
+use super::{Case, Figure, Outcome, Reference, Series, Table};
 use crate::assess::{self, Assessment, Fidelity, Settings};
 use crate::error::{Error, Result};
 use crate::hull::Hull;
@@ -85,6 +85,7 @@ pub fn ochi_particulars(case: &Case) -> Result<Outcome> {
         pts.push([k as f64 + 1.0, 100.0 * e]);
     }
     Ok(Outcome {
+        facts: Vec::new(),
         computed: 100.0 * worst,
         reference: Reference::Value { value: 0.0 },
         table: Some(Table {
@@ -114,86 +115,6 @@ pub fn ochi_particulars(case: &Case) -> Result<Outcome> {
     })
 }
 
-/// Ochi's published trend "the maximum slamming pressure occurs near the keel": the fraction of the
-/// instrumented stations with slamming events whose largest design pressure is on the keel sensor
-/// (the first of the station's sensors), from the 2D+t assessment at the test condition.
-pub fn ochi_trend(case: &Case, _mode: Mode, memo: &Memo) -> Result<Outcome> {
-    let a = assessment(case, &case.file("sea")?, memo)?;
-    let mut rows = Vec::new();
-    let mut series = Vec::new();
-    let (mut keel, mut counted) = (0usize, 0usize);
-    for st in &a.stations {
-        if st.design_pressure_pa.is_empty() || st.emerging_events == 0 {
-            continue;
-        }
-        counted += 1;
-        let (imax, _) =
-            st.design_pressure_pa
-                .iter()
-                .enumerate()
-                .fold(
-                    (0, f64::MIN),
-                    |b, (i, d)| if d.value > b.1 { (i, d.value) } else { b },
-                );
-        if imax == 0 {
-            keel += 1;
-        }
-        let mut pts = Vec::new();
-        for (i, d) in st.design_pressure_pa.iter().enumerate() {
-            rows.push(vec![
-                format!("{}", st.station),
-                d.name.clone(),
-                format!("{:.3}", d.value / 1e3),
-                d.source.to_string(),
-                format!("{}", d.speed_m_per_s),
-                d.wave.clone(),
-            ]);
-            pts.push([i as f64 + 1.0, d.value / 1e3]);
-        }
-        series.push(Series {
-            label: format!("station {}", st.station),
-            reference: false,
-            points: pts,
-        });
-    }
-    if counted == 0 {
-        return Err(Error::Invalid(
-            "no instrumented station emerges in this assessment: the trend cannot be checked"
-                .into(),
-        ));
-    }
-    Ok(Outcome {
-        computed: keel as f64 / counted as f64,
-        reference: Reference::Range {
-            lower: 1.0,
-            upper: 1.0,
-        },
-        table: Some(Table {
-            header: vec![
-                "station".into(),
-                "sensor".into(),
-                "design_pressure_kpa".into(),
-                "source".into(),
-                "speed_m_per_s".into(),
-                "wave".into(),
-            ],
-            rows,
-        }),
-        figures: vec![Figure {
-            name: "design_pressures".into(),
-            title: "Ochi V-form, test condition: design pressure per sensor".into(),
-            x_label: "sensor, keel (1) to chine (4)".into(),
-            y_label: "design pressure (kPa)".into(),
-            series,
-        }],
-        notes: vec![format!(
-            "{keel} of {counted} emerging stations have their largest design pressure on the keel sensor \
-             (fidelity {}); Ochi's pressures themselves are not available (ochi1958-pressures)",
-            a.fidelity
-        )],
-    })
-}
-
 /// Ochi's measured peak pressures: pending until the drop-in file (`pressures`, a CSV with the header
 /// `station,speed_m_per_s,sensor_index,peak_pressure_kpa`, sensor 1 at the keel) holds rows; then the
 /// largest relative difference (%) of the analytic design-event peaks at the same station, speed and
@@ -203,6 +124,7 @@ pub fn ochi_pressures(case: &Case, memo: &Memo) -> Result<Outcome> {
     let rows = csv_rows(&file)?;
     if rows.is_empty() {
         return Ok(Outcome {
+            facts: Vec::new(),
             computed: f64::NAN,
             reference: Reference::Pending {
                 reason: format!(
@@ -256,6 +178,7 @@ pub fn ochi_pressures(case: &Case, memo: &Memo) -> Result<Outcome> {
         pts.push([r[3], got]);
     }
     Ok(Outcome {
+        facts: Vec::new(),
         computed: 100.0 * worst,
         reference: Reference::Value { value: 0.0 },
         table: Some(Table {
@@ -298,6 +221,7 @@ pub fn hermundstad_wagner(case: &Case) -> Result<Outcome> {
     let veen = toml_number(&r, &["reported_comparisons", "wagner_peak_pressure_kpa"])?;
     let measured = toml_number(&r, &["measured", "panel_peak_pressure_kpa"])?;
     Ok(Outcome {
+        facts: Vec::new(),
         computed: p / 1e3,
         reference: Reference::Value { value: veen },
         table: None,
@@ -324,6 +248,7 @@ pub fn hermundstad_assess(case: &Case, memo: &Memo) -> Result<Outcome> {
         .join(case.text("sea")?);
     if !sea.is_file() {
         return Ok(Outcome {
+            facts: Vec::new(),
             computed: f64::NAN,
             reference: Reference::Pending {
                 reason: format!(
@@ -337,6 +262,7 @@ pub fn hermundstad_assess(case: &Case, memo: &Memo) -> Result<Outcome> {
         });
     }
     let a = assessment(case, &sea, memo)?;
+    let facts = flare_facts(&a);
     let name = case.text("sensor")?;
     let Some(design) = a
         .stations
@@ -359,6 +285,7 @@ pub fn hermundstad_assess(case: &Case, memo: &Memo) -> Result<Outcome> {
             })
             .collect();
         return Ok(Outcome {
+            facts,
             computed: f64::NAN,
             reference: Reference::Value { value: measured },
             table: None,
@@ -372,6 +299,7 @@ pub fn hermundstad_assess(case: &Case, memo: &Memo) -> Result<Outcome> {
     };
     let p = design.value / 1e3;
     Ok(Outcome {
+        facts,
         computed: p,
         reference: Reference::Value { value: measured },
         table: Some(Table {
@@ -426,4 +354,25 @@ pub fn hermundstad_assess(case: &Case, memo: &Memo) -> Result<Outcome> {
             notes
         },
     })
+}
+
+/// The relative velocities of the Hermundstad comparison ([`crate::assess::comparisons`]) as facts for the
+/// known-failure text: the bound of linear strip theory |s_a| w_e (`velocity_bound`), the velocity when
+/// the undisturbed surface reaches the panel (`velocity_at_panel`), and the measured one
+/// (`measured_velocity`).
+fn flare_facts(a: &Assessment) -> Vec<(String, String)> {
+    let mut out = Vec::new();
+    let show = |v: Option<f64>| v.map_or("not reached".to_string(), |v| format!("{v:.2} m/s"));
+    for c in a.validation.comparisons.iter().filter(|c| c.unit == "m/s") {
+        if c.quantity.starts_with("largest relative velocity") {
+            out.push(("velocity_bound".to_string(), show(c.computed)));
+            out.push((
+                "measured_velocity".to_string(),
+                format!("{} m/s", c.reference),
+            ));
+        } else if c.quantity.starts_with("relative velocity at flare impact") {
+            out.push(("velocity_at_panel".to_string(), show(c.computed)));
+        }
+    }
+    out
 }

@@ -5,6 +5,7 @@
 use std::f64::consts::PI;
 use std::sync::Arc;
 
+use super::conditions::WATER_DENSITY;
 use super::drops::window_mean;
 use super::run::Memo;
 use super::{Case, Figure, Mode, Outcome, Reference, Series, Table};
@@ -106,8 +107,8 @@ pub fn like_for_like_cp(
     t_end: f64,
     cutoff: f64,
 ) -> Result<f64> {
-    let w = WagnerWedge::new(beta, 1000.0, v)?;
-    let q = 0.5 * 1000.0 * v * v;
+    let w = WagnerWedge::new(beta, WATER_DENSITY, v)?;
+    let q = 0.5 * WATER_DENSITY * v * v;
     let n = 4000;
     let t: Vec<f64> = (0..=n).map(|k| t_end * k as f64 / n as f64).collect();
     let (p_sensor, _) = filtered_peak(&t, &w.sensor_history(s, width, &t), cutoff)?;
@@ -149,7 +150,7 @@ fn sensor_errors(case: &Case, deg: f64, n: f64, memo: &Memo) -> Result<(SensorEr
     let h = &run.result.history;
     let sens = &run.result.summary.setup.sensors;
     let t_end = run.result.summary.setup.t_end;
-    let q = 0.5 * 1000.0 * run.speed * run.speed;
+    let q = 0.5 * WATER_DENSITY * run.speed * run.speed;
     let m = sens.len() as f64;
     let mut e = SensorErrors {
         cp: 0.0,
@@ -195,6 +196,7 @@ pub fn similarity(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcome> {
     let n = case.particles(mode)?;
     let (e, run) = sensor_errors(case, deg, n, memo)?;
     Ok(Outcome {
+        facts: Vec::new(),
         computed: 100.0 * e.cp,
         reference: Reference::Value { value: 0.0 },
         table: Some(Table {
@@ -259,6 +261,7 @@ pub fn convergence(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcome> {
     }
     let k = cp.len() - 1;
     Ok(Outcome {
+        facts: Vec::new(),
         computed: cp[k][1],
         reference: Reference::Value {
             value: cp[k - 1][1],
@@ -313,8 +316,8 @@ pub fn force_bounds(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcome> {
     let (t0, t1) = (0.3 * run.t_wet, 0.6 * run.t_wet);
     let f_sph = window_mean(&h.t, &h.fz, t0, t1);
     let tm = 0.45 * run.t_wet;
-    let f_w = wagner::force(run.beta, 1000.0, run.speed, tm)?;
-    let f_vk = von_karman::force(run.beta, 1000.0, run.speed, tm)?;
+    let f_w = wagner::force(run.beta, WATER_DENSITY, run.speed, tm)?;
+    let f_vk = von_karman::force(run.beta, WATER_DENSITY, run.speed, tm)?;
     let theory = |f: &dyn Fn(f64) -> Result<f64>| -> Result<Vec<[f64; 2]>> {
         (1..=20)
             .map(|k| {
@@ -323,12 +326,24 @@ pub fn force_bounds(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcome> {
             })
             .collect()
     };
-    let wag = theory(&|t| wagner::force(run.beta, 1000.0, run.speed, t))?;
-    let vk = theory(&|t| von_karman::force(run.beta, 1000.0, run.speed, t))?;
+    let wag = theory(&|t| wagner::force(run.beta, WATER_DENSITY, run.speed, t))?;
+    let vk = theory(&|t| von_karman::force(run.beta, WATER_DENSITY, run.speed, t))?;
     let k_mlm = mlm_force_coefficient(run.beta)?;
-    let f_mlm = k_mlm * 1000.0 * run.speed.powi(3) * tm;
-    let mlm = theory(&|t| Ok(k_mlm * 1000.0 * run.speed.powi(3) * t))?;
+    let f_mlm = k_mlm * WATER_DENSITY * run.speed.powi(3) * tm;
+    let mlm = theory(&|t| Ok(k_mlm * WATER_DENSITY * run.speed.powi(3) * t))?;
+    let dp = run.result.summary.dp_m;
     Ok(Outcome {
+        facts: vec![
+            (
+                "window_dp".into(),
+                format!("{:.1}-{:.1}", run.speed * t0 / dp, run.speed * t1 / dp),
+            ),
+            (
+                "window_mm".into(),
+                format!("{:.0}-{:.0} mm", run.speed * t0 * 1e3, run.speed * t1 * 1e3),
+            ),
+            ("particles".into(), format!("{n}")),
+        ],
         computed: f_sph / f_w,
         reference: Reference::Range {
             lower: f_vk / f_w,
@@ -399,14 +414,14 @@ pub fn force_bounds(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcome> {
 pub fn mlm_force_coefficient(beta: f64) -> Result<f64> {
     let t: Vec<f64> = (0..=20).map(|k| k as f64 * 5e-5).collect();
     let half = [[0.0, 0.0], [1.0, beta.tan()]];
-    let m = Mlm::new(&half, &t, &vec![1.0; t.len()], 1000.0)?;
+    let m = Mlm::new(&half, &t, &vec![1.0; t.len()], WATER_DENSITY)?;
     let s = m
         .history()
         .states
         .last()
         .copied()
         .ok_or_else(|| Error::Invalid("modified Logvinovich model: no entry state".into()))?;
-    Ok(m.force(&s) / (1000.0 * s.t))
+    Ok(m.force(&s) / (WATER_DENSITY * s.t))
 }
 
 /// Wagner's peak pressure bounds the sensor peaks: the largest filtered sensor Cp over Wagner's point
@@ -417,7 +432,7 @@ pub fn pressure_bound(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcome> {
     let cutoff = case.number("filter_hz")?;
     let run = wedge_run(case, deg, n, memo)?;
     let h = &run.result.history;
-    let q = 0.5 * 1000.0 * run.speed * run.speed;
+    let q = 0.5 * WATER_DENSITY * run.speed * run.speed;
     let cp_w = wagner::peak_pressure_coefficient(run.beta)?;
     let mut pts = Vec::new();
     let mut rows = Vec::new();
@@ -433,7 +448,33 @@ pub fn pressure_bound(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcome> {
     }
     let max = pts.iter().map(|p| p[1]).fold(f64::MIN, f64::max);
     let wag: Vec<[f64; 2]> = pts.iter().map(|p| [p[0], cp_w]).collect();
+    let ratio = |p: &[f64; 2]| format!("{:.2}", p[1] / cp_w);
+    let lowest = pts.iter().map(|p| p[1]).fold(f64::MAX, f64::min);
+    let all_but_last = &pts[..pts.len().saturating_sub(1)];
+    let (lo, hi) = all_but_last
+        .iter()
+        .fold((f64::MAX, f64::MIN), |b, p| (b.0.min(p[1]), b.1.max(p[1])));
+    let mut facts = vec![
+        ("cp_max".to_string(), format!("{cp_w:.2}")),
+        ("sensors".to_string(), format!("{}", pts.len())),
+        (
+            "above".to_string(),
+            format!("{}", pts.iter().filter(|p| p[1] > cp_w).count()),
+        ),
+        ("lowest".to_string(), format!("{:.2}", lowest / cp_w)),
+        (
+            "others_range".to_string(),
+            format!("{:.2}-{:.2}", lo / cp_w, hi / cp_w),
+        ),
+    ];
+    if let (Some(first), Some(last)) = (pts.first(), pts.last()) {
+        facts.push(("first".into(), ratio(first)));
+        facts.push(("last".into(), ratio(last)));
+        facts.push(("last_girth".into(), format!("{:.3} m", last[0])));
+        facts.push(("last_cp".into(), format!("{:.2}", last[1])));
+    }
     Ok(Outcome {
+        facts,
         computed: max / cp_w,
         reference: Reference::Value { value: 1.0 },
         table: Some(Table {
@@ -489,11 +530,11 @@ mod tests {
                 &[[0.0, 0.0], [0.5, 0.5 * beta.tan()]],
                 &t,
                 &vec![3.0; t.len()],
-                1000.0,
+                WATER_DENSITY,
             )
             .unwrap();
             let s = *m.history().states.last().unwrap();
-            let other = m.force(&s) / (1000.0 * 27.0 * s.t);
+            let other = m.force(&s) / (WATER_DENSITY * 27.0 * s.t);
             assert!((other / k - 1.0).abs() < 2e-3, "{deg}: {other} vs {k}");
         }
     }
