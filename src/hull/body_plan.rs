@@ -54,7 +54,14 @@ const WATER: [RGBColor; 3] = [
     RGBColor(120, 60, 200),
 ];
 
-/// The body plan of `hull` as an SVG document.
+/// Colour of a flat keel.
+const FLAT: RGBColor = RGBColor(230, 120, 0);
+
+/// A flat keel at least this fraction of the section's largest half-breadth wide is marked (the rule of
+/// the assessment's air-cushion warning, [`crate::impact::air_cushion_warning`]).
+const FLAT_KEEL_FRACTION: f64 = 0.05;
+
+/// The body plan of `hull` as an SVG document; flat keels drawn thick in orange.
 pub fn body_plan_svg(hull: &Hull) -> Result<String> {
     register_font();
     let ymax = hull
@@ -130,6 +137,7 @@ pub fn body_plan_svg(hull: &Hull) -> Result<String> {
         // Station labels (fraction of Lpp aft of the FP) at the deck ends, skipped where one would overlap
         // the last one drawn on that side.
         let min_gap = 0.045 * (y1 - y0);
+        let mut any_flat = false;
         let mut last_label = [f64::NAN; 2];
         for st in &hull.stations {
             let sides: &[f64] = if st.x.abs() < 1e-9 {
@@ -139,11 +147,23 @@ pub fn body_plan_svg(hull: &Hull) -> Result<String> {
             } else {
                 &[-1.0]
             };
+            let flat = crate::impact::flat_keel_half_width(&st.section.points);
+            let flat_keel = flat > 0.0 && flat >= FLAT_KEEL_FRACTION * st.section.max_half_breadth();
+            any_flat |= flat_keel;
             for &s in sides {
                 let pts = st.section.points.iter().map(|p| (s * p[0], p[1]));
                 chart
                     .draw_series(LineSeries::new(pts, BLACK.stroke_width(1)))
                     .map_err(draw_error)?;
+                if flat_keel {
+                    let z = st.section.keel_z();
+                    chart
+                        .draw_series(LineSeries::new(
+                            [(0.0, z), (s * flat, z)],
+                            FLAT.stroke_width(4),
+                        ))
+                        .map_err(draw_error)?;
+                }
                 for (j, l) in hull.loadings.iter().enumerate() {
                     let zw = l.draft_at(st.x, hull.lpp);
                     let yw = s * st.section.half_breadth_at(zw);
@@ -169,6 +189,18 @@ pub fn body_plan_svg(hull: &Hull) -> Result<String> {
                     )))
                     .map_err(draw_error)?;
             }
+        }
+        if any_flat {
+            let style = TextStyle::from((FONT, 12).into_font())
+                .color(&FLAT)
+                .pos(Pos::new(HPos::Left, VPos::Bottom));
+            chart
+                .draw_series(std::iter::once(Text::new(
+                    "thick orange: flat keel (bottom impact acoustic, air cushion not modelled)",
+                    (y0 + 0.02 * (y1 - y0), z0 + 0.1 * pad),
+                    style,
+                )))
+                .map_err(draw_error)?;
         }
         for (j, l) in hull.loadings.iter().enumerate() {
             let c = WATER[j % WATER.len()];

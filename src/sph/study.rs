@@ -139,6 +139,8 @@ fn slamming_statement(levels: &[&ReportedPeak], dp: &[f64]) -> PeakConvergence {
         .expect("slamming statement of a record with anatomy");
     if fine.slamming_peak.is_none() {
         let mut c = assess(name, unit, &dp[..1], &[0.0]);
+        c.dp_m = dp.to_vec();
+        c.values = levels.iter().map(|p| p.value).collect();
         c.verdict = Verdict::NotAssessed;
         c.statement = format!(
             "{name}: no slamming peak at the reported resolution ({}); nothing to assess",
