@@ -72,7 +72,12 @@ fn every_peak_gets_a_statement_from_a_coarser_companion() {
         }
     }
     // The reported force peak is the slamming peak of the requested resolution.
-    let force = r.summary.force.anatomy.as_ref().expect("a section run's anatomy");
+    let force = r
+        .summary
+        .force
+        .anatomy
+        .as_ref()
+        .expect("a section run's anatomy");
     assert_eq!(
         conv.peaks[0].values[0],
         force.slamming_peak.expect("a force peak").value

@@ -148,7 +148,8 @@ pub fn body_plan_svg(hull: &Hull) -> Result<String> {
                 &[-1.0]
             };
             let flat = crate::impact::flat_keel_half_width(&st.section.points);
-            let flat_keel = flat > 0.0 && flat >= FLAT_KEEL_FRACTION * st.section.max_half_breadth();
+            let flat_keel =
+                flat > 0.0 && flat >= FLAT_KEEL_FRACTION * st.section.max_half_breadth();
             any_flat |= flat_keel;
             for &s in sides {
                 let pts = st.section.points.iter().map(|p| (s * p[0], p[1]));
