@@ -107,6 +107,7 @@ fn record(key: &str, s: &RunSummary) -> SphRecord {
                     rise_time_s: a.and_then(|a| a.rise_time_s),
                     hydrostatic_pa: a.and_then(|a| a.hydrostatic_at_peak),
                     largest_phase: a.map(|a| a.largest_phase),
+                    largest_hydrostatic_pa: a.and_then(|a| a.hydrostatic_at_largest),
                     gci: gci(&name),
                     particles_across_wetted: a
                         .and_then(|a| a.crossing_half_width_m.map(|c| c / s.dp_m)),

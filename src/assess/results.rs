@@ -53,9 +53,11 @@ pub struct SphSensor {
     pub rise_time_s: Option<f64>,
     #[serde(default)]
     pub hydrostatic_pa: Option<f64>,
-    /// The phase of the largest value after the transient (`raw_peak_pa`).
+    /// The phase of the largest value after the transient (`raw_peak_pa`) and its hydrostatic part.
     #[serde(default)]
     pub largest_phase: Option<Phase>,
+    #[serde(default)]
+    pub largest_hydrostatic_pa: Option<f64>,
     /// GCI of the slamming peak (fraction), from the matched levels.
     #[serde(default)]
     pub gci: Option<f64>,
@@ -170,10 +172,11 @@ pub fn sensor_warnings(r: &SphRecord, analytic: Option<&Estimate>) -> Vec<String
             let design = decide(Some(q.quantity()), mlm(&q.name))?.value;
             let load = q.later_load(design)?;
             Some(format!(
-                "{} ({:.2} kPa at {:.3} s, design {:.2} kPa)",
+                "{} ({:.2} kPa at {:.3} s, of which {:.2} kPa hydrostatic; design {:.2} kPa)",
                 q.name,
                 load * 1e-3,
                 q.peak_time_s,
+                q.largest_hydrostatic_pa.unwrap_or(0.0) * 1e-3,
                 design * 1e-3
             ))
         })
@@ -334,6 +337,8 @@ pub struct DesignValue {
     /// The largest SPH value of the governing event where it comes after the impact (immersion phase) and
     /// exceeds the design value ([`SphSensor::later_load`]).
     pub later_load: Option<f64>,
+    /// The hydrostatic part of `later_load` at its time.
+    pub later_load_hydrostatic: Option<f64>,
 }
 
 impl DesignValue {
@@ -394,6 +399,9 @@ impl DesignValue {
             rise_time_s: q.and_then(|q| q.rise_time_s),
             particles_across_wetted: q.and_then(|q| q.particles_across_wetted),
             later_load: q.and_then(|q| q.later_load(d.value)),
+            later_load_hydrostatic: q
+                .filter(|q| q.later_load(d.value).is_some())
+                .and_then(|q| q.largest_hydrostatic_pa),
         }
     }
 }
@@ -729,6 +737,7 @@ mod tests {
             rise_time_s: Some(0.01),
             hydrostatic_pa: Some(10.0),
             largest_phase: Some(Phase::Impact),
+            largest_hydrostatic_pa: None,
             gci: None,
             particles_across_wetted: Some(12.0),
         }

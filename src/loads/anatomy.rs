@@ -187,9 +187,12 @@ pub struct Anatomy {
     /// The slamming peak is the last sample of the window and the record still rises after it: the
     /// window's end cuts a load that grows into the immersion.
     pub at_window_end: bool,
-    /// The largest value after the contact transient, with the phase it lies in.
+    /// The largest value after the contact transient, with the phase it lies in and its hydrostatic
+    /// part.
     pub largest: Peak,
     pub largest_phase: Phase,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub hydrostatic_at_largest: Option<f64>,
     /// Samples left out as isolated spikes.
     pub spikes: usize,
     /// The analytic contact half-width when the contact has crossed the sensor (m): over the particle
@@ -302,6 +305,7 @@ pub fn anatomy(t: &[f64], x: &[f64], e: &Expectation, hydrostatic: &dyn Fn(f64) 
         slamming_peak: None,
         hydrostatic_at_peak: None,
         at_window_end: false,
+        hydrostatic_at_largest: largest_k.map(|_| hydrostatic(largest.time)),
         largest,
         largest_phase,
         spikes: spikes.iter().filter(|&&s| s).count(),
@@ -507,6 +511,7 @@ mod tests {
                 impulse: 0.0,
             },
             largest_phase: Phase::Impact,
+            hydrostatic_at_largest: None,
             spikes: 0,
             crossing_half_width_m: None,
             rise_time_s: None,

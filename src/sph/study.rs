@@ -404,6 +404,7 @@ mod tests {
                 at_window_end: false,
                 largest: p,
                 largest_phase: Phase::Impact,
+                hydrostatic_at_largest: None,
                 spikes: 0,
                 crossing_half_width_m: None,
                 rise_time_s: None,

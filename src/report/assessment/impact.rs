@@ -244,6 +244,30 @@ pub fn section(r: &mut Report, saved: &Saved) {
                     .push(Series::new(format!("{n} filtered"), pts, k, Mark::Line));
             }
         }
+        // each sensor's slamming peak (the largest value in its impact window), where SPH has one
+        let mut marked = 0;
+        for (k, n) in sensors.iter().enumerate() {
+            let peak = list(&run.summary, "sensors")
+                .iter()
+                .find(|q| text(q, "name") == n.as_str())
+                .map(|q| &q["anatomy"]["slamming_peak"])
+                .and_then(|p| Some((num(p, "time_s")? * 1e3, num(p, "value")? * 1e-3)));
+            if let Some(pt) = peak {
+                fig.series.push(Series::new(
+                    format!("{n} slamming peak"),
+                    vec![pt],
+                    k,
+                    Mark::Dot,
+                ));
+                marked += 1;
+            }
+        }
+        let dots = if marked > 0 {
+            " Dots: each sensor's slamming peak, the largest raw value in its impact window (the analytic \
+             contact crossing it); a sensor without a dot has no SPH impact (see the sign-off page)."
+        } else {
+            ""
+        };
         let t_tr = run.summary["contact_transient_end_s"].as_f64();
         let transient = mark_transient(&mut fig, t_tr);
         fig.size = (800, 400);
@@ -268,7 +292,7 @@ pub fn section(r: &mut Report, saved: &Saved) {
         };
         r.figure(
             fig,
-            &format!("Sensor pressure histories: {filt}{transient}"),
+            &format!("Sensor pressure histories: {filt}{transient}{dots}"),
             160.0,
         );
         let mut fig = Figure::new(

@@ -27,9 +27,10 @@ fn flags(d: &Value) -> Vec<String> {
     let mut f: Vec<String> = Vec::new();
     if let Some(l) = num(d, "later_load") {
         f.push(format!(
-            "a larger load after the impact, in the immersion phase ({:.2} kPa): not a slamming pressure, \
-             check it as a load case of its own",
-            l / 1e3
+            "a larger load after the impact, in the immersion phase ({:.2} kPa, of which {:.2} kPa \
+             hydrostatic): not a slamming pressure, check it as a load case of its own",
+            l / 1e3,
+            num(d, "later_load_hydrostatic").unwrap_or(0.0) / 1e3
         ));
     }
     let mut g = flags_of_source(d);
