@@ -7,62 +7,156 @@
 //! interpolated hull never bulges beyond the lines plan. At a station the given contour is returned as is.
 //! Because z must rise from keel to deck, the interpolated heights are made non-decreasing along the contour
 //! (a running maximum), which only acts where PCHIP rounding would otherwise make a contour dip by round-off.
+//!
+//! The cost is linear in the number of stations. For a hull of ordinary size the girth set is shared by
+//! the whole hull (the union of every station's vertices) and one interpolant per girth is built once.
+//! When that set times the number of stations would exceed [`GLOBAL_SAMPLE_LIMIT`] (thousands of stations,
+//! as an imported scan gives), the section at x is built from the four stations around x instead, with
+//! the girths of those stations only: PCHIP slopes at a knot depend on its neighbours alone, so this is
+//! the same interpolant on the same girths, and the cost per section no longer grows with the hull.
 
 use super::{Section, Station};
 use crate::numerics::Pchip;
+use crate::numerics::pchip::{hermite, knot_slope};
 
 /// Number of uniformly spaced girth samples per contour (vertices are added to these).
 const UNIFORM_SAMPLES: usize = 161;
 
+/// Largest (stations × shared girth samples) kept as one set of interpolants for the whole hull: about
+/// 48 MB of knots, values and slopes. Larger hulls interpolate from the four stations around x.
+pub(crate) const GLOBAL_SAMPLE_LIMIT: usize = 1_000_000;
+
 #[derive(Debug, Clone)]
 pub(crate) struct SectionInterpolator {
-    y: Vec<Pchip>,
-    z: Vec<Pchip>,
+    /// Station positions, aft to forward.
+    xs: Vec<f64>,
+    /// One interpolant per shared girth sample (y and z), or `None` for the local (windowed) mode.
+    global: Option<(Vec<Pchip>, Vec<Pchip>)>,
 }
 
 impl SectionInterpolator {
     pub fn new(stations: &[Station]) -> Self {
         let xs: Vec<f64> = stations.iter().map(|s| s.x).collect();
-        let params = sample_girths(stations);
-        let resampled: Vec<Vec<[f64; 2]>> = stations
-            .iter()
-            .map(|s| resample(&s.section, &params))
-            .collect();
-        let mut y = Vec::with_capacity(params.len());
-        let mut z = Vec::with_capacity(params.len());
-        for j in 0..params.len() {
-            let yj: Vec<f64> = resampled.iter().map(|r| r[j][0]).collect();
-            let zj: Vec<f64> = resampled.iter().map(|r| r[j][1]).collect();
-            y.push(Pchip::new(&xs, &yj));
-            z.push(Pchip::new(&xs, &zj));
-        }
-        Self { y, z }
+        let vertices: usize = stations.iter().map(|s| s.section.points.len()).sum();
+        // The shared set is only built when it is known to be small enough: a cheap bound first.
+        let bound = stations.len().saturating_mul(UNIFORM_SAMPLES + vertices);
+        let params = if bound <= GLOBAL_SAMPLE_LIMIT {
+            Some(sample_girths(stations))
+        } else {
+            None
+        };
+        let global = params.map(|params| {
+            let resampled: Vec<Vec<[f64; 2]>> = stations
+                .iter()
+                .map(|s| resample(&s.section, &params))
+                .collect();
+            let mut y = Vec::with_capacity(params.len());
+            let mut z = Vec::with_capacity(params.len());
+            for j in 0..params.len() {
+                let yj: Vec<f64> = resampled.iter().map(|r| r[j][0]).collect();
+                let zj: Vec<f64> = resampled.iter().map(|r| r[j][1]).collect();
+                y.push(Pchip::new(&xs, &yj));
+                z.push(Pchip::new(&xs, &zj));
+            }
+            (y, z)
+        });
+        Self { xs, global }
+    }
+
+    /// The station at `x` (within 1e-12 m), if any.
+    fn station_index(&self, x: f64) -> Option<usize> {
+        let i = self.xs.partition_point(|&v| v < x - 1e-12);
+        (i < self.xs.len() && (self.xs[i] - x).abs() <= 1e-12).then_some(i)
     }
 
     pub fn section_at(&self, stations: &[Station], x: f64) -> Section {
-        if let Some(s) = stations.iter().find(|s| (s.x - x).abs() <= 1e-12) {
-            return s.section.clone();
+        if let Some(i) = self.station_index(x) {
+            return stations[i].section.clone();
         }
-        let mut pts: Vec<[f64; 2]> = Vec::with_capacity(self.y.len());
-        let mut zmax = f64::NEG_INFINITY;
-        // Every interpolant has the stations' x as knots: one search for all of them.
-        let at = self.y[0].locate(x);
-        for j in 0..self.y.len() {
-            let yv = self.y[j].eval_at(at).max(0.0);
-            let zv = self.z[j].eval_at(at).max(zmax);
-            zmax = zv;
-            let p = [if j == 0 { 0.0 } else { yv }, zv];
-            if pts.last().is_none_or(|q: &[f64; 2]| {
-                (q[0] - p[0]).abs() > 1e-12 || (q[1] - p[1]).abs() > 1e-12
-            }) {
-                pts.push(p);
+        match &self.global {
+            Some((y, z)) => {
+                // Every interpolant has the stations' x as knots: one search for all of them.
+                let at = y[0].locate(x);
+                assemble((0..y.len()).map(|j| (y[j].eval_at(at), z[j].eval_at(at))))
             }
+            None => self.local(stations, x),
         }
-        if pts.len() < 2 {
-            pts.push([0.0, pts[0][1] + 1e-9]);
-        }
-        Section::new(pts)
     }
+
+    /// The section at `x` from the (up to) four stations around it, on their own girths.
+    fn local(&self, stations: &[Station], x: f64) -> Section {
+        let n = self.xs.len();
+        if n < 2 {
+            return stations[0].section.clone();
+        }
+        let k = self
+            .xs
+            .partition_point(|&v| v <= x)
+            .saturating_sub(1)
+            .min(n - 2);
+        let lo = k.saturating_sub(1);
+        let hi = (k + 2).min(n - 1);
+        let window = &stations[lo..=hi];
+        let wx = &self.xs[lo..=hi];
+        let params = sample_girths(window);
+        let resampled: Vec<Vec<[f64; 2]>> = window
+            .iter()
+            .map(|s| resample_sorted(&s.section, &params))
+            .collect();
+        let (a, b) = (k - lo, k - lo + 1);
+        let mut vy = [0.0; 4];
+        let mut vz = [0.0; 4];
+        let m = window.len();
+        assemble((0..params.len()).map(|j| {
+            for i in 0..m {
+                vy[i] = resampled[i][j][0];
+                vz[i] = resampled[i][j][1];
+            }
+            let (ys, zs) = (&vy[..m], &vz[..m]);
+            let yv = hermite(
+                wx[a],
+                wx[b],
+                ys[a],
+                ys[b],
+                knot_slope(wx, ys, a),
+                knot_slope(wx, ys, b),
+                x,
+            );
+            let zv = hermite(
+                wx[a],
+                wx[b],
+                zs[a],
+                zs[b],
+                knot_slope(wx, zs, a),
+                knot_slope(wx, zs, b),
+                x,
+            );
+            (yv, zv)
+        }))
+    }
+}
+
+/// A contour from interpolated (y, z) samples, keel first: y ≥ 0 and on the centreline at the keel, z made
+/// non-decreasing (a running maximum), repeated points dropped, at least two points.
+fn assemble(samples: impl Iterator<Item = (f64, f64)>) -> Section {
+    let mut pts: Vec<[f64; 2]> = Vec::new();
+    let mut zmax = f64::NEG_INFINITY;
+    for (j, (yv, zv)) in samples.enumerate() {
+        let yv = yv.max(0.0);
+        let zv = zv.max(zmax);
+        zmax = zv;
+        let p = [if j == 0 { 0.0 } else { yv }, zv];
+        if pts
+            .last()
+            .is_none_or(|q| (q[0] - p[0]).abs() > 1e-12 || (q[1] - p[1]).abs() > 1e-12)
+        {
+            pts.push(p);
+        }
+    }
+    if pts.len() < 2 {
+        pts.push([0.0, pts[0][1] + 1e-9]);
+    }
+    Section::new(pts)
 }
 
 /// Normalised girths to sample: uniform ones plus every station's vertices, sorted and de-duplicated.
@@ -88,6 +182,37 @@ fn resample(section: &Section, params: &[f64]) -> Vec<[f64; 2]> {
     params
         .iter()
         .map(|s| section.point_at_girth(s * total))
+        .collect()
+}
+
+/// [`resample`] for sorted girths in one pass along the contour (linear in points plus girths), giving
+/// the same points as [`Section::point_at_girth`].
+fn resample_sorted(section: &Section, params: &[f64]) -> Vec<[f64; 2]> {
+    let g = section.girths();
+    let p = &section.points;
+    let total = g[g.len() - 1];
+    if p.len() < 2 {
+        return vec![p[0]; params.len()];
+    }
+    let mut k = 0;
+    params
+        .iter()
+        .map(|s| {
+            let s = s * total;
+            while k < p.len() - 2 && s > g[k + 1] {
+                k += 1;
+            }
+            let len = g[k + 1] - g[k];
+            let t = if len > 0.0 {
+                ((s - g[k]) / len).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            [
+                p[k][0] + t * (p[k + 1][0] - p[k][0]),
+                p[k][1] + t * (p[k + 1][1] - p[k][1]),
+            ]
+        })
         .collect()
 }
 

@@ -14,7 +14,7 @@ mod load;
 mod offsets_csv;
 mod schema;
 mod section;
-mod validate;
+pub(crate) mod validate;
 
 use std::path::{Path, PathBuf};
 

@@ -38,25 +38,7 @@ impl Pchip {
             x.windows(2).all(|w| w[1] > w[0]),
             "pchip: x must be strictly increasing"
         );
-        let n = x.len();
-        let mut d = vec![0.0; n];
-        if n == 2 {
-            let s = (y[1] - y[0]) / (x[1] - x[0]);
-            d[0] = s;
-            d[1] = s;
-        } else if n > 2 {
-            let h: Vec<f64> = x.windows(2).map(|w| w[1] - w[0]).collect();
-            let del: Vec<f64> = (0..n - 1).map(|k| (y[k + 1] - y[k]) / h[k]).collect();
-            for k in 1..n - 1 {
-                if del[k - 1] * del[k] > 0.0 {
-                    let w1 = 2.0 * h[k] + h[k - 1];
-                    let w2 = h[k] + 2.0 * h[k - 1];
-                    d[k] = (w1 + w2) / (w1 / del[k - 1] + w2 / del[k]);
-                }
-            }
-            d[0] = end_slope(h[0], h[1], del[0], del[1]);
-            d[n - 1] = end_slope(h[n - 2], h[n - 3], del[n - 2], del[n - 3]);
-        }
+        let d = (0..x.len()).map(|k| knot_slope(x, y, k)).collect();
         Self {
             x: x.to_vec(),
             y: y.to_vec(),
@@ -142,6 +124,42 @@ impl Pchip {
             })
             .sum()
     }
+}
+
+/// The slope of the PCHIP through (x, y) at knot `k`, from the knot's neighbours only (two on each side
+/// at most): the slopes [`Pchip::new`] uses, so that a caller that needs the interpolant on one interval
+/// only can evaluate it from a window of four knots around the interval without building the whole.
+pub fn knot_slope(x: &[f64], y: &[f64], k: usize) -> f64 {
+    let n = x.len();
+    if n < 2 {
+        return 0.0;
+    }
+    let h = |i: usize| x[i + 1] - x[i];
+    let del = |i: usize| (y[i + 1] - y[i]) / h(i);
+    if n == 2 {
+        return del(0);
+    }
+    if k == 0 {
+        return end_slope(h(0), h(1), del(0), del(1));
+    }
+    if k == n - 1 {
+        return end_slope(h(n - 2), h(n - 3), del(n - 2), del(n - 3));
+    }
+    let (d0, d1) = (del(k - 1), del(k));
+    if d0 * d1 > 0.0 {
+        let w1 = 2.0 * h(k) + h(k - 1);
+        let w2 = h(k) + 2.0 * h(k - 1);
+        (w1 + w2) / (w1 / d0 + w2 / d1)
+    } else {
+        0.0
+    }
+}
+
+/// The Hermite cubic on [x0, x1] with values y0, y1 and slopes d0, d1, at `t` (extended outside).
+pub fn hermite(x0: f64, x1: f64, y0: f64, y1: f64, d0: f64, d1: f64, t: f64) -> f64 {
+    let h = x1 - x0;
+    let (h00, h10, h01, h11) = hermite_basis((t - x0) / h);
+    h00 * y0 + h10 * h * d0 + h01 * y1 + h11 * h * d1
 }
 
 fn hermite_basis(s: f64) -> (f64, f64, f64, f64) {

@@ -39,6 +39,27 @@ use crate::progress::ProgressHandle;
 
 /// Read, check and run the sweep file at `path` with `opts`, writing the results into `opts.out`.
 pub fn run(path: &Path, opts: &Options, progress: &ProgressHandle) -> Result<SweepResult> {
+    // Say how big the sweep is before the (possibly long) preparation starts.
+    let n = cases::expand(&file::SweepFile::read(path)?)?.len();
+    progress.note(&size_note(n));
     let p = prepare::prepare(path, &opts.out)?;
     execute::run(&p, opts, progress)
+}
+
+/// Sweeps with at least this many cases get a note on their cost before they start.
+pub const LARGE_SWEEP: usize = 10_000;
+
+/// The note printed before a sweep is prepared: its number of cases and, for a large one, what that
+/// means in time.
+pub fn size_note(cases: usize) -> String {
+    if cases >= LARGE_SWEEP {
+        format!(
+            "{cases} cases to prepare and run: each case is a whole assessment (at the analytic fidelity some \
+             0.01-0.1 s of CPU, with SPH minutes), so this sweep takes of the order of {:.0} CPU hours or more; \
+             it can be stopped and resumed (finished cases are cached), or split with --shard",
+            cases as f64 * 0.05 / 3600.0
+        )
+    } else {
+        format!("{cases} cases to prepare and run")
+    }
 }
