@@ -17,7 +17,7 @@
 
 use super::{Section, Station};
 use crate::numerics::Pchip;
-use crate::numerics::pchip::{hermite, knot_slope};
+use crate::numerics::pchip::{hermite_basis, slope_from};
 
 /// Number of uniformly spaced girth samples per contour (vertices are added to these).
 const UNIFORM_SAMPLES: usize = 161;
@@ -83,6 +83,21 @@ impl SectionInterpolator {
         }
     }
 
+    /// The sections at `xs`, all within station interval `k` (between stations k and k + 1): the same as
+    /// [`SectionInterpolator::section_at`] at each, with the work shared by the interval done once.
+    pub fn sections_in_interval(&self, stations: &[Station], k: usize, xs: &[f64]) -> Vec<Section> {
+        if self.global.is_some() || self.xs.len() < 2 {
+            return xs.iter().map(|&x| self.section_at(stations, x)).collect();
+        }
+        let w = Window::new(self, stations, k.min(self.xs.len() - 2));
+        xs.iter()
+            .map(|&x| match self.station_index(x) {
+                Some(i) => stations[i].section.clone(),
+                None => w.at(x),
+            })
+            .collect()
+    }
+
     /// The section at `x` from the (up to) four stations around it, on their own girths.
     fn local(&self, stations: &[Station], x: f64) -> Section {
         let n = self.xs.len();
@@ -94,44 +109,83 @@ impl SectionInterpolator {
             .partition_point(|&v| v <= x)
             .saturating_sub(1)
             .min(n - 2);
+        Window::new(self, stations, k).at(x)
+    }
+}
+
+/// The interpolant on one station interval, from the (up to) four stations around it: per girth sample,
+/// the values and PCHIP slopes of y and z at both ends of the interval.
+struct Window {
+    x0: f64,
+    x1: f64,
+    /// Per girth sample: [y0, y1, dy0, dy1, z0, z1, dz0, dz1].
+    ends: Vec<[f64; 8]>,
+}
+
+impl Window {
+    fn new(it: &SectionInterpolator, stations: &[Station], k: usize) -> Self {
+        let n = it.xs.len();
         let lo = k.saturating_sub(1);
         let hi = (k + 2).min(n - 1);
         let window = &stations[lo..=hi];
-        let wx = &self.xs[lo..=hi];
+        let wx = &it.xs[lo..=hi];
         let params = sample_girths(window);
         let resampled: Vec<Vec<[f64; 2]>> = window
             .iter()
             .map(|s| resample_sorted(&s.section, &params))
             .collect();
         let (a, b) = (k - lo, k - lo + 1);
+        let m = window.len();
+        let mut h = [0.0; 3];
+        for i in 0..m - 1 {
+            h[i] = wx[i + 1] - wx[i];
+        }
+        let h = &h[..m - 1];
+        let (two, first, last) = (n == 2, k == 0, k + 1 == n - 1);
+        // Values and slopes at both ends of the interval, from the secants of the window.
+        let ends_of = |v: &[f64; 4]| {
+            let mut del = [0.0; 3];
+            for i in 0..m - 1 {
+                del[i] = (v[i + 1] - v[i]) / h[i];
+            }
+            let del = &del[..m - 1];
+            (
+                v[a],
+                v[b],
+                slope_from(h, del, a, two, first, false),
+                slope_from(h, del, b, two, false, last),
+            )
+        };
         let mut vy = [0.0; 4];
         let mut vz = [0.0; 4];
-        let m = window.len();
-        assemble((0..params.len()).map(|j| {
-            for i in 0..m {
-                vy[i] = resampled[i][j][0];
-                vz[i] = resampled[i][j][1];
-            }
-            let (ys, zs) = (&vy[..m], &vz[..m]);
-            let yv = hermite(
-                wx[a],
-                wx[b],
-                ys[a],
-                ys[b],
-                knot_slope(wx, ys, a),
-                knot_slope(wx, ys, b),
-                x,
-            );
-            let zv = hermite(
-                wx[a],
-                wx[b],
-                zs[a],
-                zs[b],
-                knot_slope(wx, zs, a),
-                knot_slope(wx, zs, b),
-                x,
-            );
-            (yv, zv)
+        let ends = (0..params.len())
+            .map(|j| {
+                for i in 0..m {
+                    vy[i] = resampled[i][j][0];
+                    vz[i] = resampled[i][j][1];
+                }
+                let (y0, y1, dy0, dy1) = ends_of(&vy);
+                let (z0, z1, dz0, dz1) = ends_of(&vz);
+                [y0, y1, dy0, dy1, z0, z1, dz0, dz1]
+            })
+            .collect();
+        Self {
+            x0: wx[a],
+            x1: wx[b],
+            ends,
+        }
+    }
+
+    /// The section at `x` (in or near the interval).
+    fn at(&self, x: f64) -> Section {
+        // The Hermite cubic of every girth sample, with the basis at x computed once.
+        let h = self.x1 - self.x0;
+        let (h00, h10, h01, h11) = hermite_basis((x - self.x0) / h);
+        assemble(self.ends.iter().map(|e| {
+            (
+                h00 * e[0] + h10 * h * e[2] + h01 * e[1] + h11 * h * e[3],
+                h00 * e[4] + h10 * h * e[6] + h01 * e[5] + h11 * h * e[7],
+            )
         }))
     }
 }

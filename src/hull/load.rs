@@ -37,7 +37,7 @@ fn clean_name(s: &str) -> String {
 }
 
 pub(crate) fn hull_from_source(src: &SourceText) -> Result<Hull> {
-    let raw: HullFile = src.parse_toml()?;
+    let raw: HullFile = super::chunked::parse(src)?;
     if raw.name.get_ref().trim().is_empty() {
         return Err(src.error(&raw.name, "name must not be empty").into());
     }
@@ -124,6 +124,7 @@ pub(crate) fn hull_from_source(src: &SourceText) -> Result<Hull> {
         stations,
         loadings,
         sensors: Vec::new(),
+        hydrostatics: Vec::new(),
         source: src.path.clone(),
         offsets_file: raw.offsets_csv.as_ref().map(|c| {
             let base = src.path.parent().unwrap_or(std::path::Path::new("."));
@@ -132,7 +133,8 @@ pub(crate) fn hull_from_source(src: &SourceText) -> Result<Hull> {
     };
     for l in &raw.loading.get_ref()[..] {
         check_offsets_reach_waterline(src, &hull, l)?;
-        check_immersed(src, &hull, l)?;
+        let hs = check_immersed(src, &hull, l)?;
+        hull.hydrostatics.push(hs);
     }
     let mut names = HashSet::new();
     for s in &raw.sensor {
@@ -424,7 +426,13 @@ fn check_offsets_reach_waterline(
     Ok(())
 }
 
-fn check_immersed(src: &SourceText, hull: &Hull, raw: &Spanned<LoadingRaw>) -> Result<()> {
+/// The loading's hydrostatics, checked: the hull is immersed, pierces the water, and floats near the
+/// given displacement.
+fn check_immersed(
+    src: &SourceText,
+    hull: &Hull,
+    raw: &Spanned<LoadingRaw>,
+) -> Result<super::Hydrostatics> {
     let r = raw.get_ref();
     let name = clean_name(r.name.get_ref());
     let name = name.as_str();
@@ -463,7 +471,7 @@ fn check_immersed(src: &SourceText, hull: &Hull, raw: &Spanned<LoadingRaw>) -> R
                 .into());
         }
     }
-    Ok(())
+    Ok(hs)
 }
 
 fn sensor(src: &SourceText, hull: &Hull, s: &Spanned<SensorRaw>) -> Result<Sensor> {

@@ -134,35 +134,50 @@ pub fn knot_slope(x: &[f64], y: &[f64], k: usize) -> f64 {
     if n < 2 {
         return 0.0;
     }
-    let h = |i: usize| x[i + 1] - x[i];
-    let del = |i: usize| (y[i + 1] - y[i]) / h(i);
-    if n == 2 {
-        return del(0);
+    // Only the (up to) three intervals next to knot k matter.
+    let lo = k.saturating_sub(2).min(n - 2);
+    let hi = (k + 2).min(n - 1);
+    let mut h = [0.0; 4];
+    let mut del = [0.0; 4];
+    for i in lo..hi {
+        h[i - lo] = x[i + 1] - x[i];
+        del[i - lo] = (y[i + 1] - y[i]) / h[i - lo];
     }
-    if k == 0 {
-        return end_slope(h(0), h(1), del(0), del(1));
+    slope_from(
+        &h[..hi - lo],
+        &del[..hi - lo],
+        k - lo,
+        n == 2,
+        k == 0,
+        k == n - 1,
+    )
+}
+
+/// The PCHIP slope at knot `k` of a run of intervals with lengths `h` and secant slopes `del` (knot k
+/// is the left end of interval k of the run); `two` when the whole interpolant has two knots, `first` and
+/// `last` when k is its first or last knot. The formula of [`knot_slope`], for callers that share `h`.
+pub fn slope_from(h: &[f64], del: &[f64], k: usize, two: bool, first: bool, last: bool) -> f64 {
+    if two {
+        return del[0];
     }
-    if k == n - 1 {
-        return end_slope(h(n - 2), h(n - 3), del(n - 2), del(n - 3));
+    if first {
+        return end_slope(h[k], h[k + 1], del[k], del[k + 1]);
     }
-    let (d0, d1) = (del(k - 1), del(k));
+    if last {
+        return end_slope(h[k - 1], h[k - 2], del[k - 1], del[k - 2]);
+    }
+    let (d0, d1) = (del[k - 1], del[k]);
     if d0 * d1 > 0.0 {
-        let w1 = 2.0 * h(k) + h(k - 1);
-        let w2 = h(k) + 2.0 * h(k - 1);
+        let w1 = 2.0 * h[k] + h[k - 1];
+        let w2 = h[k] + 2.0 * h[k - 1];
         (w1 + w2) / (w1 / d0 + w2 / d1)
     } else {
         0.0
     }
 }
 
-/// The Hermite cubic on [x0, x1] with values y0, y1 and slopes d0, d1, at `t` (extended outside).
-pub fn hermite(x0: f64, x1: f64, y0: f64, y1: f64, d0: f64, d1: f64, t: f64) -> f64 {
-    let h = x1 - x0;
-    let (h00, h10, h01, h11) = hermite_basis((t - x0) / h);
-    h00 * y0 + h10 * h * d0 + h01 * y1 + h11 * h * d1
-}
-
-fn hermite_basis(s: f64) -> (f64, f64, f64, f64) {
+/// The cubic Hermite basis (h00, h10, h01, h11) at the local coordinate s ∈ [0, 1] of an interval.
+pub fn hermite_basis(s: f64) -> (f64, f64, f64, f64) {
     let s2 = s * s;
     let s3 = s2 * s;
     (
