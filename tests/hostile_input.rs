@@ -620,6 +620,29 @@ fn control_characters_never_reach_the_terminal() {
 }
 
 #[test]
+fn validate_says_why_a_case_could_not_be_computed() {
+    let (_t, d) = setup();
+    std::fs::create_dir_all(d.join("cases")).unwrap();
+    let case =
+        std::fs::read_to_string(Path::new(ROOT).join("validation/ochi1958-particulars.toml"))
+            .unwrap()
+            .replace("\"../data/reference/", &format!("\"{ROOT}/data/reference/"))
+            .replace(
+                "hull = \"../hulls/ochi-vform.toml\"",
+                "hull = \"missing.toml\"",
+            );
+    std::fs::write(d.join("cases/broken.toml"), case).unwrap();
+    let o = slamtool(&["validate", "--cases-dir", "cases", "-o", "v"], &d);
+    assert_eq!(o.status.code(), Some(6), "{}", stderr(&o));
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        text.contains("ERROR broken: the computation failed:")
+            && text.contains("missing.toml not found"),
+        "{text}"
+    );
+}
+
+#[test]
 fn report_from_another_folder_finds_the_hull() {
     let (_t, d) = setup();
     let res = Path::new(ROOT).join("reports/ochi-vform");

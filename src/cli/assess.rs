@@ -148,14 +148,15 @@ const MAX_PARTICLES_PER_HALF_BEAM: f64 = 640.0;
 /// `froude_numbers`): strip theory means nothing far beyond it.
 const MAX_FROUDE: f64 = 1.0;
 
-/// `--speeds` checked before anything is computed: finite, not negative, Froude number at most
-/// [`MAX_FROUDE`] for this hull; the message gives the accepted range in m/s.
-fn check_speeds(speeds: &[f64], lpp: f64) -> Result<()> {
+/// Speeds (`--speeds`, or the sea file's, named by `what`) checked before anything is computed: finite,
+/// not negative, Froude number at most [`MAX_FROUDE`] for this hull; the message gives the accepted range
+/// in m/s.
+fn check_speeds(speeds: &[f64], lpp: f64, what: &str) -> Result<()> {
     let vmax = MAX_FROUDE * (slamtool::sea::waves::G * lpp).sqrt();
     for &u in speeds {
         if !(u.is_finite() && (0.0..=vmax).contains(&u)) {
             return Err(Error::Invalid(format!(
-                "--speeds: {u} m/s is outside the accepted range 0 to {vmax:.2} m/s for this hull (Froude \
+                "{what}: {u} m/s is outside the accepted range 0 to {vmax:.2} m/s for this hull (Froude \
                  number at most {MAX_FROUDE} with Lpp = {lpp} m); speeds are in m/s"
             )));
         }
@@ -174,7 +175,12 @@ pub fn run(a: AssessArgs) -> Result<()> {
              fine is 160), got {n}"
         )));
     }
-    check_speeds(&a.speeds, hull.lpp)?;
+    if a.speeds.is_empty() {
+        let from = format!("the speeds of {}", a.sea.display());
+        check_speeds(&sea.speeds.resolve(hull.lpp), hull.lpp, &from)?;
+    } else {
+        check_speeds(&a.speeds, hull.lpp, "--speeds")?;
+    }
     if let Some(p) = a.max_pressure_kpa
         && !(p.is_finite() && p > 0.0)
     {

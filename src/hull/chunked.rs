@@ -134,7 +134,9 @@ mod tests {
         let src = SourceText::from_string("h.toml", text.clone());
         let whole: HullFile = src.parse_toml().unwrap();
         let chunked = parse(&src).unwrap();
-        let spans = |h: &HullFile| -> Vec<(Range<usize>, Range<usize>, Vec<Range<usize>>)> {
+        /// Spans of a station: x_m, points, each point.
+        type StationSpans = (Range<usize>, Range<usize>, Vec<Range<usize>>);
+        let spans = |h: &HullFile| -> Vec<StationSpans> {
             h.station
                 .as_ref()
                 .unwrap()

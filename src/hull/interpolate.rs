@@ -32,15 +32,22 @@ pub(crate) struct SectionInterpolator {
     xs: Vec<f64>,
     /// One interpolant per shared girth sample (y and z), or `None` for the local (windowed) mode.
     global: Option<(Vec<Pchip>, Vec<Pchip>)>,
+    /// Girths of every station's vertices from the keel (local mode only; empty otherwise).
+    girths: Vec<Vec<f64>>,
 }
 
 impl SectionInterpolator {
     pub fn new(stations: &[Station]) -> Self {
+        Self::with_limit(stations, GLOBAL_SAMPLE_LIMIT)
+    }
+
+    /// The interpolator with the shared girth set only when stations × samples is at most `limit`.
+    fn with_limit(stations: &[Station], limit: usize) -> Self {
         let xs: Vec<f64> = stations.iter().map(|s| s.x).collect();
         let vertices: usize = stations.iter().map(|s| s.section.points.len()).sum();
         // The shared set is only built when it is known to be small enough: a cheap bound first.
         let bound = stations.len().saturating_mul(UNIFORM_SAMPLES + vertices);
-        let params = if bound <= GLOBAL_SAMPLE_LIMIT {
+        let params = if bound <= limit {
             Some(sample_girths(stations))
         } else {
             None
@@ -60,7 +67,12 @@ impl SectionInterpolator {
             }
             (y, z)
         });
-        Self { xs, global }
+        let girths = if global.is_some() {
+            Vec::new()
+        } else {
+            stations.iter().map(|s| s.section.girths()).collect()
+        };
+        Self { xs, global, girths }
     }
 
     /// The station at `x` (within 1e-12 m), if any.
@@ -129,10 +141,12 @@ impl Window {
         let hi = (k + 2).min(n - 1);
         let window = &stations[lo..=hi];
         let wx = &it.xs[lo..=hi];
-        let params = sample_girths(window);
+        let girths = &it.girths[lo..=hi];
+        let params = sample_girths_of(girths);
         let resampled: Vec<Vec<[f64; 2]>> = window
             .iter()
-            .map(|s| resample_sorted(&s.section, &params))
+            .zip(girths)
+            .map(|(s, g)| resample_sorted(&s.section, g, &params))
             .collect();
         let (a, b) = (k - lo, k - lo + 1);
         let m = window.len();
@@ -215,11 +229,16 @@ fn assemble(samples: impl Iterator<Item = (f64, f64)>) -> Section {
 
 /// Normalised girths to sample: uniform ones plus every station's vertices, sorted and de-duplicated.
 fn sample_girths(stations: &[Station]) -> Vec<f64> {
+    let girths: Vec<Vec<f64>> = stations.iter().map(|s| s.section.girths()).collect();
+    sample_girths_of(&girths)
+}
+
+/// [`sample_girths`] from the stations' vertex girths.
+fn sample_girths_of(girths: &[Vec<f64>]) -> Vec<f64> {
     let mut s: Vec<f64> = (0..UNIFORM_SAMPLES)
         .map(|j| j as f64 / (UNIFORM_SAMPLES - 1) as f64)
         .collect();
-    for st in stations {
-        let g = st.section.girths();
+    for g in girths {
         let total = g[g.len() - 1];
         if total > 0.0 {
             s.extend(g.iter().map(|gi| gi / total));
@@ -240,9 +259,8 @@ fn resample(section: &Section, params: &[f64]) -> Vec<[f64; 2]> {
 }
 
 /// [`resample`] for sorted girths in one pass along the contour (linear in points plus girths), giving
-/// the same points as [`Section::point_at_girth`].
-fn resample_sorted(section: &Section, params: &[f64]) -> Vec<[f64; 2]> {
-    let g = section.girths();
+/// the same points as [`Section::point_at_girth`]; `g` are the girths of the section's vertices.
+fn resample_sorted(section: &Section, g: &[f64], params: &[f64]) -> Vec<[f64; 2]> {
     let p = &section.points;
     let total = g[g.len() - 1];
     if p.len() < 2 {
@@ -289,6 +307,58 @@ mod tests {
         let mid = it.section_at(&st, 0.5);
         assert!((mid.half_breadth_at(1.0) - 1.5).abs() < 1e-9);
         assert!((mid.half_breadth_at(0.5) - 0.75).abs() < 1e-9);
+    }
+
+    /// The four-station window is the same interpolant as the whole-hull one: identical where both use
+    /// the same girths (contours of two points), and within a fraction of a millimetre per metre where the
+    /// window has fewer girth samples (contours with vertices at different girths).
+    #[test]
+    fn windowed_sections_are_the_whole_hull_interpolant() {
+        let st: Vec<Station> = (0..9)
+            .map(|i| wedge(i as f64, 1.0 + 0.3 * (i as f64).sin()))
+            .collect();
+        let (whole, window) = (
+            SectionInterpolator::with_limit(&st, usize::MAX),
+            SectionInterpolator::with_limit(&st, 0),
+        );
+        assert!(whole.global.is_some() && window.global.is_none());
+        for i in 0..=80 {
+            let x = i as f64 * 0.1;
+            assert_eq!(
+                whole.section_at(&st, x),
+                window.section_at(&st, x),
+                "x = {x}"
+            );
+        }
+        let knuckled: Vec<Station> = (0..9)
+            .map(|i| {
+                let b = 1.0 + 0.2 * i as f64;
+                let k = 0.2 + 0.07 * i as f64;
+                Station {
+                    x: i as f64,
+                    section: Section::new(vec![[0.0, 0.0], [0.6 * b, k], [b, 1.0], [1.1 * b, 1.5]]),
+                }
+            })
+            .collect();
+        let (whole, window) = (
+            SectionInterpolator::with_limit(&knuckled, usize::MAX),
+            SectionInterpolator::with_limit(&knuckled, 0),
+        );
+        for i in 0..=80 {
+            let x = i as f64 * 0.1;
+            let (a, b) = (
+                whole.section_at(&knuckled, x),
+                window.section_at(&knuckled, x),
+            );
+            for z in [0.05, 0.3, 0.7, 1.0, 1.4] {
+                let d = (a.half_breadth_at(z) - b.half_breadth_at(z)).abs();
+                assert!(d < 2e-3, "x = {x}, z = {z}: {d}");
+            }
+            let ks = whole.sections_in_interval(&knuckled, (x as usize).min(7), &[x]);
+            assert_eq!(ks[0], a);
+            let kw = window.sections_in_interval(&knuckled, (x as usize).min(7), &[x]);
+            assert_eq!(kw[0], b);
+        }
     }
 
     #[test]
