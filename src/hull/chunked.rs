@@ -9,7 +9,8 @@
 //!
 //! The split is by lines: a table header is a line whose first non-blank character is `[` followed by a
 //! name (a letter, `_` or a quote; a line of numbers such as `[[0.0, 1.0],` is not). A file with
-//! multi-line strings, where such a line could be text, is read whole.
+//! multi-line strings after its first table header (where such a line could be text) is read whole;
+//! multi-line strings before it, such as a description, are allowed.
 
 use std::ops::Range;
 
@@ -39,7 +40,7 @@ fn header_name(line: &str) -> Option<&str> {
 /// [`SourceText::parse_toml`]).
 pub(crate) fn parse(src: &SourceText) -> Result<HullFile, InputError> {
     let text = &src.text;
-    if text.len() < CHUNKED_BYTES || text.contains("\"\"\"") || text.contains("'''") {
+    if text.len() < CHUNKED_BYTES {
         return src.parse_toml();
     }
     // Line starts of every table header, with whether it is a station.
@@ -53,6 +54,15 @@ pub(crate) fn parse(src: &SourceText) -> Result<HullFile, InputError> {
             ));
         }
         offset += line.len();
+    }
+    // Multi-line strings are allowed only before the first header, and closed there (a description):
+    // from the first header on, a header-like line is then a header.
+    let first = headers.first().map_or(text.len(), |h| h.0);
+    let (head, tail) = text.split_at(first);
+    for q in ["\"\"\"", "'''"] {
+        if tail.contains(q) || head.matches(q).count() % 2 == 1 {
+            return src.parse_toml();
+        }
     }
     let chunks: Vec<Range<usize>> = headers
         .iter()
@@ -127,7 +137,7 @@ mod tests {
     fn chunked_and_whole_reads_agree() {
         let pad = format!("# {}\n", "x".repeat(200)).repeat(CHUNKED_BYTES / 200 + 1);
         let text = format!(
-            "name = \"b\"\nlpp_m = 10.0\n{pad}\n[[loading]]\nname = \"d\"\ndraft_fp_m = 1.0\ndraft_ap_m = 1.0\n\
+            "name = \"b\"\ndescription = \"\"\"\nmulti-line\n[1] text\n\"\"\"\nlpp_m = 10.0\n{pad}\n[[loading]]\nname = \"d\"\ndraft_fp_m = 1.0\ndraft_ap_m = 1.0\n\
              kg_m = 1.0\nk_yy_m = 2.5\n\n[[station]]\nx_m = -5.0\npoints = [\n  [0.0, 0.0],\n  [1.0, 0.0], [1.0, 2.0]]\n\n\
              [[station]]\nx_m = 5.0 # fwd\npoints = [[0.0, 0.0], [1.0, 0.0], [1.0, 2.0]]\n"
         );

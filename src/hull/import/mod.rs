@@ -473,7 +473,7 @@ fn resample(imported: &mut Imported, n: usize) -> Result<()> {
         let x = a + (f - a) * i as f64 / (n - 1) as f64;
         stations.push(StationSpec {
             position: Position::X(x),
-            points: hull.section_at(x)?.points,
+            points: tidy(hull.section_at(x)?.points),
         });
     }
     imported.spec.stations = stations;
