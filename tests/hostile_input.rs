@@ -389,6 +389,50 @@ fn a_hull_of_thousands_of_stations_is_read() {
     assert_eq!(v["number_of_offset_stations"], 3000);
 }
 
+#[test]
+fn a_fine_grid_resamples_to_many_stations() {
+    // 30 stations on 20 waterlines to 200 stations: every resampled contour carries the girths of all
+    // the grid's vertices, so the written hull is read back through the windowed interpolation.
+    let (_t, d) = setup();
+    let zs: Vec<f64> = (0..20).map(|k| 3.0 * f64::from(k) / 19.0).collect();
+    let mut csv = format!(
+        "x_m,{}\n",
+        zs.iter()
+            .map(|z| format!("{z:.4}"))
+            .collect::<Vec<_>>()
+            .join(",")
+    );
+    for i in 0..30 {
+        let x = -25.0 + 50.0 * f64::from(i) / 29.0;
+        let b = 4.0 * (1.0 - (x / 26.0f64).powi(2));
+        let cells: Vec<String> = zs
+            .iter()
+            .map(|z| format!("{:.4}", b * (0.3 + 0.7 * (z / 3.0).sqrt())))
+            .collect();
+        csv += &format!("{x:.4},{}\n", cells.join(","));
+    }
+    std::fs::write(d.join("grid.csv"), csv).unwrap();
+    succeeds(
+        &[
+            "hull",
+            "import",
+            "grid.csv",
+            "--draft-m",
+            "1.5",
+            "--stations",
+            "200",
+            "-o",
+            "g.toml",
+        ],
+        &d,
+    );
+    let o = succeeds(&["hull", "info", "g.toml", "--json"], &d);
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["number_of_offset_stations"], 200);
+    let cb = v["loadings"][0]["hydrostatics"]["cb"].as_f64().unwrap();
+    assert!(cb > 0.4 && cb < 0.8, "{cb}");
+}
+
 // ---------------------------------------------------------------------------------------------------
 // 3. Input checked before compute
 // ---------------------------------------------------------------------------------------------------
