@@ -69,7 +69,8 @@ impl Error {
                     Some(f) => std::io::Error::new(
                         source.kind(),
                         format!(
-                            "{} is a file, not a folder, so nothing can be written under it; give                              another output path ({source})",
+                            "{} is a file, not a folder, so there is nothing under it; give a path \
+                             that is not under a file ({source})",
                             f.display()
                         ),
                     ),

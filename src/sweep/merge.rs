@@ -10,6 +10,9 @@ use super::cases::MAX_CASES;
 use super::results::SweepResult;
 use crate::error::{Error, Result};
 
+/// Largest shard file read, bytes (a million cases at a few hundred bytes each, with room).
+pub const MAX_SHARD_BYTES: u64 = 4 << 30;
+
 /// Read the `sweep.json` of a shard's folder.
 pub fn read(dir: &Path) -> Result<SweepResult> {
     let p = if dir.is_dir() {
@@ -17,6 +20,16 @@ pub fn read(dir: &Path) -> Result<SweepResult> {
     } else {
         dir.to_path_buf()
     };
+    if let Ok(m) = std::fs::metadata(&p)
+        && m.len() > MAX_SHARD_BYTES
+    {
+        return Err(Error::Invalid(format!(
+            "{}: {} bytes is more than the sweep.json of a sweep of at most {MAX_CASES} cases can be \
+             ({MAX_SHARD_BYTES} bytes accepted)",
+            p.display(),
+            m.len()
+        )));
+    }
     let text = std::fs::read_to_string(&p).map_err(|e| Error::io(&p, e))?;
     serde_json::from_str(&text).map_err(|e| {
         Error::Invalid(format!(
