@@ -136,6 +136,8 @@ pub fn run(a: ValidateArgs) -> Result<()> {
                 r.verdict
             );
         }
+        println!("wall time {:.0} s", suite.wall_time_s);
+        println!("{}", global::files_written_line(&a.out));
         // A case that could not be computed shows ERROR in the table; its reason is said here, not only
         // in its case.json.
         for c in &suite.cases {
@@ -151,8 +153,6 @@ pub fn run(a: ValidateArgs) -> Result<()> {
                 );
             }
         }
-        println!("wall time {:.0} s", suite.wall_time_s);
-        println!("{}", global::files_written_line(&a.out));
     }
     let failed: Vec<&str> = suite
         .cases
