@@ -54,7 +54,31 @@ pub enum Error {
 }
 
 impl Error {
+    /// An operating-system error on `path`. Where a folder could not be made because a file stands in
+    /// its place (`-o out.svg/figures`), the message says so instead of the bare "File exists".
     pub fn io(path: &Path, source: std::io::Error) -> Self {
+        use std::io::ErrorKind;
+        let source = match source.kind() {
+            ErrorKind::AlreadyExists | ErrorKind::NotADirectory => {
+                let blocker = if path.is_file() && source.kind() == ErrorKind::AlreadyExists {
+                    Some(path.to_path_buf())
+                } else {
+                    crate::output_policy::file_in_the_way(path)
+                };
+                match blocker {
+                    Some(f) => std::io::Error::new(
+                        source.kind(),
+                        format!(
+                            "{} is a file, not a folder, so there is nothing under it; give a path \
+                             that is not under a file ({source})",
+                            f.display()
+                        ),
+                    ),
+                    None => source,
+                }
+            }
+            _ => source,
+        };
         Error::Io {
             path: path.to_path_buf(),
             source,

@@ -9,6 +9,10 @@ use toml::Spanned;
 
 use crate::error::{Error, InputError, Result};
 
+/// Largest input text file read (hull, sea state, case, sweep, offsets), bytes: a hull of 100,000
+/// stations is about 10 MB.
+pub const MAX_INPUT_BYTES: u64 = 256 << 20;
+
 /// The text of an input file, kept to turn byte offsets into line and column numbers.
 #[derive(Debug, Clone)]
 pub struct SourceText {
@@ -19,6 +23,18 @@ pub struct SourceText {
 impl SourceText {
     /// Read a file from disk. Text that is not UTF-8 is an [`InputError`] at the first bad byte.
     pub fn read(path: &Path) -> Result<Self> {
+        // A size bound before reading: every reader's memory is then bounded by a multiple of it.
+        if let Ok(m) = std::fs::metadata(path)
+            && m.is_file()
+            && m.len() > MAX_INPUT_BYTES
+        {
+            return Err(Error::Invalid(format!(
+                "{}: {} bytes is larger than the {MAX_INPUT_BYTES} bytes an input text file may have; is it the \
+                 right file?",
+                path.display(),
+                m.len()
+            )));
+        }
         let bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
         match String::from_utf8(bytes) {
             Ok(text) => Ok(Self {

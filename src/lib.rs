@@ -30,6 +30,7 @@ pub mod impact;
 pub mod input;
 pub mod loads;
 pub mod numerics;
+pub mod output_policy;
 pub mod plot;
 pub mod progress;
 pub mod provenance;

@@ -75,9 +75,14 @@ pub struct AssessArgs {
     /// Resolutions per SPH run including the reported one (1 = no convergence statement, 2 or 3).
     #[arg(long, default_value_t = 2, value_parser = clap::value_parser!(u8).range(1..=3))]
     convergence_levels: u8,
-    /// Parallel SPH runs [default: one per core].
-    #[arg(short = 'j', long, value_name = "N")]
-    threads: Option<usize>,
+    /// Parallel SPH runs, 1 to 256 [default: one per core].
+    #[arg(
+        short = 'j',
+        long,
+        value_name = "N",
+        value_parser = clap::value_parser!(u16).range(1..=global::MAX_THREADS)
+    )]
+    threads: Option<u16>,
     /// Design events of irregular seas at risk level alpha: the entry velocity the largest of the N slams
     /// of the exposure exceeds with probability alpha [default: the most probable largest in N slams].
     #[arg(long, value_name = "ALPHA")]
@@ -120,17 +125,9 @@ pub fn default_out(hull_file: &Path) -> PathBuf {
     Path::new("reports").join(stem)
 }
 
-/// Refuse a folder that holds other things than an earlier assessment, unless --force.
+/// Refuse a folder that holds other things than an earlier assessment, unless --force (the rule of
+/// every command, [`slamtool::output_policy::check_out_folder`]).
 fn check_out(dir: &Path, force: bool) -> Result<()> {
-    if dir.exists() && !dir.is_dir() {
-        return Err(Error::Invalid(format!(
-            "the output folder {} is a file, not a folder",
-            dir.display()
-        )));
-    }
-    let Ok(entries) = std::fs::read_dir(dir) else {
-        return Ok(());
-    };
     let known = [
         "summary.json",
         "pressures.csv",
@@ -141,29 +138,48 @@ fn check_out(dir: &Path, force: bool) -> Result<()> {
         "figures",
         slamtool::report::assessment::TIMING_FILE,
     ];
-    let other = entries
-        .flatten()
-        .map(|e| e.file_name().to_string_lossy().into_owned())
-        .find(|n| !known.contains(&n.as_str()) && !n.starts_with('.'));
-    match other {
-        Some(n) if !force => Err(Error::Invalid(format!(
-            "the output folder {} holds '{n}', which an assessment did not write; give another -o DIR or \
-             --force to write there anyway",
-            dir.display()
-        ))),
-        _ => Ok(()),
+    slamtool::output_policy::check_out_folder(dir, &|n| known.contains(&n), "an assessment", force)
+}
+
+/// Largest `--particles-per-half-beam` accepted: four times the fine resolution (160).
+const MAX_PARTICLES_PER_HALF_BEAM: f64 = 640.0;
+
+/// Largest Froude number accepted in `--speeds` (the bound of `motions --fn` and of a sea file's
+/// `froude_numbers`): strip theory means nothing far beyond it.
+const MAX_FROUDE: f64 = 1.0;
+
+/// Speeds (`--speeds`, or the sea file's, named by `what`) checked before anything is computed: finite,
+/// not negative, Froude number at most [`MAX_FROUDE`] for this hull; the message gives the accepted range
+/// in m/s.
+fn check_speeds(speeds: &[f64], lpp: f64, what: &str) -> Result<()> {
+    let vmax = MAX_FROUDE * (slamtool::sea::waves::G * lpp).sqrt();
+    for &u in speeds {
+        if !(u.is_finite() && (0.0..=vmax).contains(&u)) {
+            return Err(Error::Invalid(format!(
+                "{what}: {u} m/s is outside the accepted range 0 to {vmax:.2} m/s for this hull (Froude \
+                 number at most {MAX_FROUDE} with Lpp = {lpp} m); speeds are in m/s"
+            )));
+        }
     }
+    Ok(())
 }
 
 pub fn run(a: AssessArgs) -> Result<()> {
     let hull = Hull::from_file(&a.hull)?;
     let sea = SeaState::from_file(&a.sea)?;
     if let Some(n) = a.particles_per_half_beam
-        && !(n.is_finite() && n >= 4.0)
+        && !(n.is_finite() && (4.0..=MAX_PARTICLES_PER_HALF_BEAM).contains(&n))
     {
         return Err(Error::Invalid(format!(
-            "--particles-per-half-beam must be at least 4, got {n}"
+            "--particles-per-half-beam must lie between 4 and {MAX_PARTICLES_PER_HALF_BEAM} (--resolution \
+             fine is 160), got {n}"
         )));
+    }
+    if a.speeds.is_empty() {
+        let from = format!("the speeds of {}", a.sea.display());
+        check_speeds(&sea.speeds.resolve(hull.lpp), hull.lpp, &from)?;
+    } else {
+        check_speeds(&a.speeds, hull.lpp, "--speeds")?;
     }
     if let Some(p) = a.max_pressure_kpa
         && !(p.is_finite() && p > 0.0)
@@ -220,7 +236,7 @@ pub fn run(a: AssessArgs) -> Result<()> {
             .map_or(assess::design_event::Basis::MostProbableLargest, |r| {
                 assess::design_event::Basis::RiskLevel(r)
             }),
-        threads: a.threads,
+        threads: a.threads.map(usize::from),
         max_wall_s: (!a.force).then_some(slamtool::sph::cost::MAX_WALL_S),
         ..Settings::default()
     };

@@ -205,17 +205,27 @@ fn wedge(a: WedgeArgs) -> slamtool::Result<()> {
             a.deadrise_deg
         )));
     }
+    check_common(&a.common)?;
     let beta = a.deadrise_deg.to_radians();
     let chine = a.half_beam * beta.tan();
     let section = Section::wedge(beta, a.half_beam, 1.5 * chine)?;
     let side = a.half_beam / beta.cos();
+    let width = a.sensor_width.min(0.19 * side);
+    let mut warnings = Vec::new();
+    if a.sensor_width > width {
+        warnings.push(format!(
+            "--sensor-width {} m is wider than the wedge allows (five sensors on a side of {side:.4} m): the \
+             sensors are {width:.4} m wide",
+            a.sensor_width
+        ));
+    }
     let sensors = [0.1, 0.3, 0.5, 0.7, 0.9]
         .iter()
         .enumerate()
         .map(|(k, f)| SensorSpec {
             name: format!("p{}", k + 1),
             s_m: f * side,
-            width_m: a.sensor_width.min(0.19 * side),
+            width_m: width,
         })
         .collect();
     let name = format!("wedge_{}deg_{}ms", a.deadrise_deg, a.speed);
@@ -228,9 +238,21 @@ fn wedge(a: WedgeArgs) -> slamtool::Result<()> {
     let run = Run {
         common: &a.common,
         prov,
-        warnings: Vec::new(),
+        warnings,
     };
     constant_speed(&name, &section, a.speed, sensors, &a.numerics, run)
+}
+
+/// The options every entry run shares, checked before anything is computed.
+fn check_common(c: &Common) -> slamtool::Result<()> {
+    if let Some(f) = c.filter_hz
+        && !(f.is_finite() && f > 0.0)
+    {
+        return Err(slamtool::Error::Invalid(format!(
+            "--filter-hz must be a positive cut-off frequency in Hz, got {f} (leave it out for raw peaks only)"
+        )));
+    }
+    Ok(())
 }
 
 /// What every entry run carries besides its setup: the shared options, provenance and warnings found
@@ -267,6 +289,7 @@ fn hull_section(a: SectionArgs) -> slamtool::Result<()> {
             a.speed
         )));
     }
+    check_common(&a.common)?;
     let hull = slamtool::hull::Hull::from_file(&a.hull)?;
     let st = a.station.resolve(&hull)?;
     let x = st.x;
@@ -290,6 +313,7 @@ fn hull_section(a: SectionArgs) -> slamtool::Result<()> {
 }
 
 fn case(a: CaseArgs) -> slamtool::Result<()> {
+    check_common(&a.common)?;
     let mut setup = sph::case::from_file(&a.file)?;
     // Command-line options take precedence over the file for the few they share; resolution, c0, t_end
     // and the domain are set in the file only.
@@ -310,10 +334,32 @@ fn case(a: CaseArgs) -> slamtool::Result<()> {
 
 fn go(mut setup: sph::Setup, run: Run, name: &str) -> slamtool::Result<()> {
     let c = run.common;
-    let out = c
-        .out
-        .clone()
-        .unwrap_or_else(|| PathBuf::from("out").join(name));
+    // A name from a case file becomes one folder name under out/, never a path of its own.
+    let out = match &c.out {
+        Some(o) => o.clone(),
+        None => {
+            let folder = slamtool::output_policy::safe_component(name, "the case name")?;
+            if folder != name {
+                global::note(&format!(
+                    "the case name '{name}' is not a plain folder name; writing to out/{folder}"
+                ));
+            }
+            PathBuf::from("out").join(folder)
+        }
+    };
+    // An automatic end time that ran out before the keel got deep enough means no impact at all.
+    if setup.t_end >= sph::automatic::T_END_MAX_S
+        && let Some(n) = setup
+            .notes
+            .iter()
+            .find(|n| n.contains(sph::automatic::NEVER_DEEP_ENOUGH))
+    {
+        return Err(slamtool::Error::Invalid(format!(
+            "{name}: the body does not enter the water far enough for an impact within the longest automatic \
+             run ({n}); the entry speed is too small or the motion does not go down (slamming entry speeds \
+             are of the order of 0.1 to 20 m/s): give a larger speed, a downward motion, or an explicit t_end"
+        )));
+    }
     if c.frames > 0 && setup.snapshot_interval.is_none() {
         setup.snapshot_interval = Some(setup.t_end / c.frames as f64);
     }

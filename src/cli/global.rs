@@ -10,6 +10,11 @@ use std::sync::OnceLock;
 use clap::{Args, ValueEnum};
 use slamtool::sph::TankLayout;
 
+/// Largest `-j N` accepted (threads or parallel runs): more than any machine slamtool runs on has cores,
+/// and few enough that a typing slip (`-j 100000`) cannot start a hundred thousand threads. 0 is refused:
+/// leave `-j` out for one per core.
+pub const MAX_THREADS: i64 = 256;
+
 /// When to colour the output.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, ValueEnum)]
 pub enum ColorWhen {
@@ -105,8 +110,28 @@ fn paint(on: bool, code: &str, text: &str) -> String {
 /// A note on stderr (what is being run, with which settings); suppressed by `-q`.
 pub fn note(msg: &str) {
     if !quiet() {
-        eprintln!("{msg}");
+        eprintln!("{}", terminal_safe(msg));
     }
+}
+
+/// `msg` with its control characters escaped (line breaks and tabs kept), so that a name read from a
+/// file never reaches the terminal as a raw escape sequence.
+pub fn terminal_safe(msg: &str) -> String {
+    if !msg
+        .chars()
+        .any(|c| c.is_control() && c != '\n' && c != '\t')
+    {
+        return msg.to_string();
+    }
+    msg.split('\n')
+        .map(|line| {
+            line.split('\t')
+                .map(slamtool::output_policy::escape_control)
+                .collect::<Vec<_>>()
+                .join("\t")
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
 }
 
 /// A warning on stderr, for output modes where stdout carries JSON (the JSON holds the warnings too);
@@ -115,17 +140,29 @@ pub fn warn_stderr(msg: &str) {
     if quiet() {
         return;
     }
-    eprintln!("{} {msg}", paint(ui().color_stderr, "1;33", "warning:"));
+    eprintln!(
+        "{} {}",
+        paint(ui().color_stderr, "1;33", "warning:"),
+        terminal_safe(msg)
+    );
 }
 
 /// A warning line in a text report on stdout.
 pub fn warning_line(msg: &str) -> String {
-    format!("{} {msg}", paint(ui().color_stdout, "1;33", "warning:"))
+    format!(
+        "{} {}",
+        paint(ui().color_stdout, "1;33", "warning:"),
+        terminal_safe(msg)
+    )
 }
 
 /// An error on stderr.
 pub fn error(msg: &str) {
-    eprintln!("{} {msg}", paint(ui().color_stderr, "1;31", "error:"));
+    eprintln!(
+        "{} {}",
+        paint(ui().color_stderr, "1;31", "error:"),
+        terminal_safe(msg)
+    );
 }
 
 /// Print a `--json` result on stdout: pretty-printed, numbers rounded to 10 significant digits (no

@@ -101,11 +101,12 @@ fn info(a: InfoArgs) -> slamtool::Result<()> {
         Some(n) => vec![hull.loading(Some(n))?],
         None => hull.loadings.iter().collect(),
     };
-    let hs: Vec<Hydrostatics> = loadings
-        .iter()
-        .map(|l| Hydrostatics::compute(&hull, l))
-        .collect();
-    let warnings: Vec<String> = hs.iter().flat_map(sanity::negative_gm).collect();
+    let hs: Vec<Hydrostatics> = loadings.iter().map(|l| hull.hydrostatics(l)).collect();
+    let mut warnings: Vec<String> = hs.iter().flat_map(sanity::negative_gm).collect();
+    warnings.extend(
+        hs.iter()
+            .flat_map(|h| sanity::implausible_form(h, hull.x_range())),
+    );
     if a.json.json {
         let reports: Vec<LoadingReport> = hs
             .iter()

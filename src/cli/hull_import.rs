@@ -48,9 +48,13 @@ pub struct ImportArgs {
     /// The hull file to write (TOML, written atomically).
     #[arg(short = 'o', long = "out", value_name = "FILE")]
     pub out: PathBuf,
+    /// Write the hull file even where FILE is the offsets grid or surface being imported.
+    #[arg(long)]
+    pub force: bool,
 }
 
 pub fn run(a: ImportArgs) -> slamtool::Result<()> {
+    slamtool::output_policy::refuse_input_target(&a.out, &[a.file.as_path()], "-o", a.force)?;
     let opts = ImportOptions {
         name: a.name,
         lpp: a.lpp_m,

@@ -15,10 +15,14 @@ pub struct PlotArgs {
     /// The SVG file to write (atomically).
     #[arg(short = 'o', long = "out", value_name = "FILE")]
     pub out: PathBuf,
+    /// Write the SVG even where FILE is one of the hull's own input files.
+    #[arg(long)]
+    pub force: bool,
 }
 
 pub fn run(a: PlotArgs) -> slamtool::Result<()> {
     let hull = Hull::from_file(&a.file)?;
+    slamtool::output_policy::refuse_input_target(&a.out, &hull.input_files(), "-o", a.force)?;
     let svg = body_plan_svg(&hull)?;
     slamtool::files::write_text_atomic(&a.out, &svg)?;
     eprintln!("wrote {}", a.out.display());

@@ -114,7 +114,22 @@ fn color_choice() -> clap::ColorChoice {
 
 /// The command tree, with the examples and exit statuses at the end of the top-level help.
 pub fn command() -> clap::Command {
-    Cli::command().after_long_help(format!("{TOP_EXAMPLES}\n\n{}", exit::TABLE))
+    negative_numbers(Cli::command()).after_long_help(format!("{TOP_EXAMPLES}\n\n{}", exit::TABLE))
+}
+
+/// Every option that takes a value, in every command, takes a negative number after a space as its
+/// value (`--risk-level -0.1`, `--x-m -2.4`), so that the range check of the option answers instead of
+/// the parser's "unexpected argument '-0'". No option or flag of slamtool is spelt as a number, so
+/// nothing else changes.
+fn negative_numbers(cmd: clap::Command) -> clap::Command {
+    cmd.mut_args(|a| {
+        if a.get_action().takes_values() {
+            a.allow_negative_numbers(true)
+        } else {
+            a
+        }
+    })
+    .mut_subcommands(negative_numbers)
 }
 
 pub fn main() -> ExitCode {

@@ -101,6 +101,13 @@ pub struct MotionsArgs {
     out: Option<PathBuf>,
 }
 
+/// Largest `--swell-up` accepted: measured dynamic swell-up factors lie between 1 and about 1.5.
+const MAX_SWELL_UP: f64 = 3.0;
+/// Largest `--strips` accepted (strip theory converges with a few dozen).
+const MAX_STRIPS: usize = 1000;
+/// Largest `--spectrum-samples` accepted.
+const MAX_SPECTRUM_SAMPLES: usize = 100_000;
+
 fn bad(what: &str, requirement: &str, v: f64) -> Error {
     Error::Invalid(format!("{what} must be {requirement}, got {v}"))
 }
@@ -119,6 +126,38 @@ pub fn run(a: MotionsArgs) -> Result<()> {
         if !(v.is_finite() && v > 0.0) {
             return Err(bad("--lambda-over-l values", "positive finite numbers", v));
         }
+    }
+    if !(a.swell_up.is_finite() && (1.0..=MAX_SWELL_UP).contains(&a.swell_up)) {
+        return Err(bad(
+            "--swell-up",
+            &format!("between 1 (no swell-up) and {MAX_SWELL_UP}"),
+            a.swell_up,
+        ));
+    }
+    if !(a.slam_limit.is_finite() && a.slam_limit > 0.0 && a.slam_limit < 1.0) {
+        return Err(bad(
+            "--slam-limit",
+            "a probability between 0 and 1 (exclusive)",
+            a.slam_limit,
+        ));
+    }
+    if !(3..=MAX_STRIPS).contains(&a.strips) {
+        return Err(bad(
+            "--strips",
+            &format!("between 3 and {MAX_STRIPS}"),
+            a.strips as f64,
+        ));
+    }
+    if a.spectrum_samples > MAX_SPECTRUM_SAMPLES {
+        return Err(bad(
+            "--spectrum-samples",
+            &format!("at most {MAX_SPECTRUM_SAMPLES}"),
+            a.spectrum_samples as f64,
+        ));
+    }
+    // The output folder is checked before the computation, not after it.
+    if let Some(dir) = &a.out {
+        slamtool::output_policy::check_out_folder(dir, &|_| true, "motions", false)?;
     }
     if !(a.frequency_spacing.is_finite() && (0.0..=0.5).contains(&a.frequency_spacing)) {
         return Err(bad(
@@ -146,6 +185,22 @@ pub fn run(a: MotionsArgs) -> Result<()> {
         at = impact::sensor_stations(&hull);
     }
     let mut stations = Vec::new();
+    let mut seen: Vec<f64> = Vec::new();
+    at.retain(|&f| {
+        let key = (f * 1e9).round() / 1e9;
+        if seen.contains(&key) {
+            let given = if a.x_m.is_empty() {
+                format!("--station {f}")
+            } else {
+                format!("--x-m {}", hull.station_x(f))
+            };
+            warnings.push(station::duplicate(&given, key));
+            false
+        } else {
+            seen.push(key);
+            true
+        }
+    });
     for &f in &at {
         let x = hull.station_x(f);
         let given = if a.x_m.is_empty() {

@@ -2,9 +2,10 @@
 //! twins) from the saved results of `slamtool assess`, without recomputing them. The work is
 //! `slamtool::report::assessment`.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use clap::Args;
+use slamtool::output_policy as policy;
 use slamtool::report::assessment;
 
 use super::global::{self, JsonArg};
@@ -26,8 +27,34 @@ pub struct ReportArgs {
     /// give a byte-identical report.
     #[arg(long)]
     stamp: bool,
+    /// Write into an output folder (or its figures/) that holds files a report or an assessment did not
+    /// write. Such files are never removed.
+    #[arg(long)]
+    force: bool,
     #[command(flatten)]
     json: JsonArg,
+}
+
+/// Refuse an output folder, or a `figures/` in it, that holds files neither an assessment nor a report
+/// wrote, unless --force (the rule of every command).
+fn check_out(out: &Path, force: bool) -> slamtool::Result<()> {
+    let known = [
+        "summary.json",
+        "pressures.csv",
+        "bow_force.csv",
+        "cache",
+        "motions.json",
+        "report.pdf",
+        "figures",
+        assessment::TIMING_FILE,
+    ];
+    policy::check_out_folder(out, &|n| known.contains(&n), "a report", force)?;
+    policy::check_out_folder(
+        &out.join("figures"),
+        &assessment::is_report_figure,
+        "a report",
+        force,
+    )
 }
 
 /// Today's date (UTC) as YYYY-MM-DD, from the system clock.
@@ -64,6 +91,7 @@ pub fn write_report(
 
 pub fn run(a: ReportArgs) -> slamtool::Result<()> {
     let out = a.out.clone().unwrap_or_else(|| a.results.clone());
+    check_out(&out, a.force)?;
     let g = write_report(&a.results, &out, a.stamp)?;
     if a.json.json {
         let files: Vec<String> = g.files.iter().map(|p| p.display().to_string()).collect();

@@ -84,7 +84,8 @@ pub fn outside_perpendiculars(hull: &Hull, x: f64, given: &str) -> Option<String
 
 /// Stations given as lists, `--station F,..` and/or `--x-m X,..`, each checked against the hull (a station
 /// outside the offsets is an error naming the option). Returns them in the order given, `--station` first,
-/// as fractions of Lpp aft of the FP, with the warnings of stations outside the perpendiculars.
+/// as fractions of Lpp aft of the FP, each once (a repeat is dropped with a warning), with the warnings of
+/// stations outside the perpendiculars.
 pub fn resolve_list(hull: &Hull, stations: &[f64], x_m: &[f64]) -> Result<(Vec<f64>, Vec<String>)> {
     let mut at = Vec::new();
     let mut warnings = Vec::new();
@@ -96,7 +97,19 @@ pub fn resolve_list(hull: &Hull, stations: &[f64], x_m: &[f64]) -> Result<(Vec<f
         let r = check(hull, x, g)?;
         warnings.extend(r.warning);
         // Rounded to 1e-9 Lpp, as the sensor stations are (x -> fraction is not exact in floating point).
-        at.push((hull.aft_of_fp(r.x) * 1e9).round() / 1e9);
+        let f = (hull.aft_of_fp(r.x) * 1e9).round() / 1e9;
+        if at.contains(&f) {
+            warnings.push(duplicate(&r.given, f));
+        } else {
+            at.push(f);
+        }
     }
     Ok((at, warnings))
+}
+
+/// The note for a station given twice: it is computed once.
+pub fn duplicate(given: &str, f: f64) -> String {
+    format!(
+        "{given}: station {f} (fraction of Lpp aft of the FP) is given more than once; it is computed once"
+    )
 }

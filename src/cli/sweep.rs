@@ -32,9 +32,14 @@ pub struct SweepArgs {
     /// DIR/shard-<i>-of-<n>/.
     #[arg(short, long, value_name = "DIR", alias = "output")]
     out: Option<PathBuf>,
-    /// Parallel threads [default: one per core].
-    #[arg(short = 'j', long, value_name = "N")]
-    threads: Option<usize>,
+    /// Parallel threads, 1 to 256 [default: one per core].
+    #[arg(
+        short = 'j',
+        long,
+        value_name = "N",
+        value_parser = clap::value_parser!(u16).range(1..=global::MAX_THREADS)
+    )]
+    threads: Option<u16>,
     /// Run only shard i of n (0-based; case k belongs to shard k mod n). Without it the shard is read
     /// from SLURM_ARRAY_TASK_ID/SLURM_ARRAY_TASK_COUNT(/SLURM_ARRAY_TASK_MIN) or JOB_COMPLETION_INDEX.
     #[arg(long, value_name = "i/n")]
@@ -60,35 +65,22 @@ pub struct MergeArgs {
     /// Output folder [default: the folder holding the first DIR].
     #[arg(short, long, value_name = "DIR", alias = "output")]
     out: Option<PathBuf>,
+    /// Write into an output folder that is one of the shards, or holds files a sweep did not write.
+    #[arg(long)]
+    force: bool,
     #[command(flatten)]
     json: JsonArg,
 }
 
-/// Refuse a folder that holds other things than a sweep's files, unless --force.
+/// Refuse a folder that holds other things than a sweep's files, unless --force (the rule of every
+/// command, [`slamtool::output_policy::check_out_folder`]).
 fn check_out(dir: &Path, force: bool) -> Result<()> {
-    if dir.exists() && !dir.is_dir() {
-        return Err(Error::Invalid(format!(
-            "the output folder {} is a file, not a folder",
-            dir.display()
-        )));
-    }
-    let Ok(entries) = std::fs::read_dir(dir) else {
-        return Ok(());
-    };
-    let other = entries
-        .flatten()
-        .map(|e| e.file_name().to_string_lossy().into_owned())
-        .find(|n| {
-            !output::KNOWN.contains(&n.as_str()) && !n.starts_with('.') && !n.starts_with("shard-")
-        });
-    match other {
-        Some(n) if !force => Err(Error::Invalid(format!(
-            "the output folder {} holds '{n}', which a sweep did not write; give another -o DIR or --force \
-             to write there anyway",
-            dir.display()
-        ))),
-        _ => Ok(()),
-    }
+    slamtool::output_policy::check_out_folder(
+        dir,
+        &|n| output::KNOWN.contains(&n) || n.starts_with("shard-"),
+        "a sweep",
+        force,
+    )
 }
 
 /// The text summary: counts, failures and the best variants.
@@ -185,7 +177,7 @@ pub fn run(a: SweepArgs) -> Result<()> {
     };
     let opts = sweep::Options {
         out: out.clone(),
-        threads: a.threads,
+        threads: a.threads.map(usize::from),
         shard,
         stop_after: a.stop_after,
     };
@@ -214,7 +206,18 @@ pub fn run_merge(a: MergeArgs) -> Result<()> {
             .parent()
             .map_or(PathBuf::from("."), Path::to_path_buf)
     });
-    check_out(&out, false)?;
+    // A shard given as its sweep.json file stands for its folder.
+    let inputs: Vec<&Path> = a
+        .dirs
+        .iter()
+        .map(|d| match d.parent() {
+            Some(p) if d.is_file() && !p.as_os_str().is_empty() => p,
+            Some(_) if d.is_file() => Path::new("."),
+            _ => d.as_path(),
+        })
+        .collect();
+    slamtool::output_policy::refuse_input_target(&out, &inputs, "-o", a.force)?;
+    check_out(&out, a.force)?;
     output::write(&out, &r)?;
     report(&r, &out, serde_json::json!({}), a.json.json)
 }

@@ -144,6 +144,21 @@ pub fn run(a: ValidateArgs) -> Result<()> {
         println!("{}", report::tally_text(&suite));
         println!("wall time {:.0} s", suite.wall_time_s);
         println!("{}", global::files_written_line(&a.out));
+        // A case that could not be computed shows ERROR in the table; its reason is said here, not only
+        // in its case.json.
+        for c in &suite.cases {
+            if c.verdict == validate::Verdict::Error {
+                let why = c
+                    .notes
+                    .iter()
+                    .find(|n| n.starts_with("the computation failed"))
+                    .map_or("no reason recorded", String::as_str);
+                println!(
+                    "{}",
+                    global::terminal_safe(&format!("ERROR {}: {why}", c.name))
+                );
+            }
+        }
     }
     let failed: Vec<&str> = suite
         .cases

@@ -12,7 +12,8 @@
 //!   waterline breadth (over the stations and the interpolated sections between them), T the mean draft and
 //!   A_M the midship (x = 0) sectional area.
 //!
-//! The integrals over x use Gauss-Legendre quadrature (6 points per station interval) on the sections
+//! The integrals over x use Gauss-Legendre quadrature (6 points per station interval, down to 2 on hulls of
+//! more than 2,000 station intervals) on the sections
 //! interpolated between stations (shape-preserving PCHIP, see `interpolate`), each cut by its own local
 //! waterline, so trim is exact for any station spacing.
 
@@ -23,6 +24,16 @@ use super::{Hull, LoadingCondition, SectionProperties};
 
 /// Gauss-Legendre points per station interval.
 const GAUSS_POINTS: usize = 6;
+
+/// Quadrature nodes over the whole hull above which the points per interval are reduced (to at least 2,
+/// exact for the cubic interpolants between stations): a hull of thousands of stations needs no more.
+const MAX_NODES: usize = 12_000;
+
+/// Gauss-Legendre points per interval for a hull of `intervals` station intervals: [`GAUSS_POINTS`] for
+/// any hull up to 2,000 intervals, fewer for more, so that the cost stays linear in the stations.
+fn gauss_points(intervals: usize) -> usize {
+    (MAX_NODES / intervals.max(1)).clamp(2, GAUSS_POINTS)
+}
 use crate::numerics::quadrature::gauss_legendre;
 
 /// Sectional area at one station.
@@ -115,23 +126,19 @@ impl Hydrostatics {
             })
             .collect();
         // Section properties at every quadrature node, each under its own local waterline.
-        let (nodes, weights) = gauss_legendre(GAUSS_POINTS);
-        let mut at = Vec::with_capacity((n - 1) * GAUSS_POINTS);
-        for w in xs.windows(2) {
-            let (mid, half) = (0.5 * (w[0] + w[1]), 0.5 * (w[1] - w[0]));
-            for (t, wt) in nodes.iter().zip(&weights) {
-                at.push((mid + half * t, wt * half));
-            }
-        }
-        // The sections in parallel, collected in order (the sums below do not depend on the threads).
-        let samples: Vec<(f64, f64, SectionProperties)> = at
-            .par_iter()
-            .map(|&(x, w)| {
-                let p = hull
-                    .section_at(x)
-                    .expect("node lies between stations")
-                    .properties(loading.draft_at(x, lpp));
-                (x, w, p)
+        let (nodes, weights) = gauss_legendre(gauss_points(n - 1));
+        // The intervals in parallel, collected in order (the sums below do not depend on the threads).
+        let samples: Vec<(f64, f64, SectionProperties)> = (0..n - 1)
+            .into_par_iter()
+            .flat_map_iter(|k| {
+                let (mid, half) = (0.5 * (xs[k] + xs[k + 1]), 0.5 * (xs[k + 1] - xs[k]));
+                let at: Vec<f64> = nodes.iter().map(|t| mid + half * t).collect();
+                let sections = hull.sections_in_interval(k, &at);
+                at.into_iter()
+                    .zip(sections)
+                    .zip(&weights)
+                    .map(move |((x, s), wt)| (x, wt * half, s.properties(loading.draft_at(x, lpp))))
+                    .collect::<Vec<_>>()
             })
             .collect();
         let int = |f: &dyn Fn(f64, &SectionProperties) -> f64| -> f64 {

@@ -15,6 +15,13 @@ use crate::input::{SourceText, finite, in_range, num, positive};
 /// Water density accepted as physical, kg/m³ (fresh water at 40 °C to brine-rich sea water).
 const RHO_RANGE: (f64, f64) = (990.0, 1050.0);
 
+/// Most stations a hull may have (a scanned or finely resampled hull has thousands; the reader's cost is
+/// linear in them).
+pub const MAX_STATIONS: usize = 200_000;
+
+/// Most points a station contour may have.
+pub const MAX_POINTS_PER_STATION: usize = 10_000;
+
 /// Longest Lpp accepted, m: longer than any ship built (the longest, Seawise Giant, had 440 m), so that a
 /// length typed in millimetres is caught.
 pub(crate) const LPP_MAX: f64 = 1000.0;
@@ -23,8 +30,14 @@ pub(crate) const LPP_MAX: f64 = 1000.0;
 /// larger difference is a mistake (a unit slip, wrong drafts), since the ship would not float at those drafts.
 const MASS_BUOYANCY_TOLERANCE: f64 = 0.25;
 
+/// A name from the file, trimmed, with control characters escaped (`\u{1b}`) so that no command prints
+/// them raw to a terminal.
+fn clean_name(s: &str) -> String {
+    crate::output_policy::escape_control(s.trim())
+}
+
 pub(crate) fn hull_from_source(src: &SourceText) -> Result<Hull> {
-    let raw: HullFile = src.parse_toml()?;
+    let raw: HullFile = super::chunked::parse(src)?;
     if raw.name.get_ref().trim().is_empty() {
         return Err(src.error(&raw.name, "name must not be empty").into());
     }
@@ -103,7 +116,7 @@ pub(crate) fn hull_from_source(src: &SourceText) -> Result<Hull> {
 
     let loadings = loadings(src, lpp, depth, &raw.loading)?;
     let mut hull = Hull {
-        name: raw.name.get_ref().trim().to_string(),
+        name: clean_name(raw.name.get_ref()),
         description: raw.description.clone(),
         lpp,
         depth,
@@ -111,6 +124,7 @@ pub(crate) fn hull_from_source(src: &SourceText) -> Result<Hull> {
         stations,
         loadings,
         sensors: Vec::new(),
+        hydrostatics: Vec::new(),
         source: src.path.clone(),
         offsets_file: raw.offsets_csv.as_ref().map(|c| {
             let base = src.path.parent().unwrap_or(std::path::Path::new("."));
@@ -119,7 +133,8 @@ pub(crate) fn hull_from_source(src: &SourceText) -> Result<Hull> {
     };
     for l in &raw.loading.get_ref()[..] {
         check_offsets_reach_waterline(src, &hull, l)?;
-        check_immersed(src, &hull, l)?;
+        let hs = check_immersed(src, &hull, l)?;
+        hull.hydrostatics.push(hs);
     }
     let mut names = HashSet::new();
     for s in &raw.sensor {
@@ -187,6 +202,26 @@ pub(crate) fn order_stations<L: Clone>(
     mut stations: Vec<(f64, Vec<[f64; 2]>, L)>,
     err: impl Fn(L, String) -> Error,
 ) -> Result<Vec<Station>> {
+    if stations.len() > MAX_STATIONS {
+        let at = stations[MAX_STATIONS].2.clone();
+        return Err(err(
+            at,
+            format!(
+                "{} stations, more than the {MAX_STATIONS} a hull may have",
+                stations.len()
+            ),
+        ));
+    }
+    if let Some(s) = stations.iter().find(|s| s.1.len() > MAX_POINTS_PER_STATION) {
+        return Err(err(
+            s.2.clone(),
+            format!(
+                "the station at x = {:.4} m has {} points, more than the {MAX_POINTS_PER_STATION} a station may have",
+                s.0,
+                s.1.len()
+            ),
+        ));
+    }
     let ascending = stations.len() < 2 || stations[1].0 > stations[0].0;
     for k in 1..stations.len() {
         let (prev, cur) = (stations[k - 1].0, stations[k].0);
@@ -240,7 +275,7 @@ fn loadings(
     let mut out = Vec::new();
     for l in raw.get_ref() {
         let r = l.get_ref();
-        let name = r.name.get_ref().trim().to_string();
+        let name = clean_name(r.name.get_ref());
         if name.is_empty() {
             return Err(src.error(&r.name, "loading name must not be empty").into());
         }
@@ -365,7 +400,8 @@ fn check_offsets_reach_waterline(
     raw: &Spanned<LoadingRaw>,
 ) -> Result<()> {
     let r = raw.get_ref();
-    let name = r.name.get_ref().trim();
+    let name = clean_name(r.name.get_ref());
+    let name = name.as_str();
     let l = hull.loading(Some(name))?;
     for st in &hull.stations {
         let zw = l.draft_at(st.x, hull.lpp);
@@ -390,9 +426,16 @@ fn check_offsets_reach_waterline(
     Ok(())
 }
 
-fn check_immersed(src: &SourceText, hull: &Hull, raw: &Spanned<LoadingRaw>) -> Result<()> {
+/// The loading's hydrostatics, checked: the hull is immersed, pierces the water, and floats near the
+/// given displacement.
+fn check_immersed(
+    src: &SourceText,
+    hull: &Hull,
+    raw: &Spanned<LoadingRaw>,
+) -> Result<super::Hydrostatics> {
     let r = raw.get_ref();
-    let name = r.name.get_ref().trim();
+    let name = clean_name(r.name.get_ref());
+    let name = name.as_str();
     let l = hull.loading(Some(name))?;
     let hs = super::Hydrostatics::compute(hull, l);
     if hs.volume <= 0.0 {
@@ -428,12 +471,12 @@ fn check_immersed(src: &SourceText, hull: &Hull, raw: &Spanned<LoadingRaw>) -> R
                 .into());
         }
     }
-    Ok(())
+    Ok(hs)
 }
 
 fn sensor(src: &SourceText, hull: &Hull, s: &Spanned<SensorRaw>) -> Result<Sensor> {
     let r = s.get_ref();
-    let name = r.name.get_ref().trim().to_string();
+    let name = clean_name(r.name.get_ref());
     if name.is_empty() {
         return Err(src.error(&r.name, "sensor name must not be empty").into());
     }

@@ -6,6 +6,7 @@
 //! baseline. A station given as a fraction f of Lpp aft of the FP sits at x = Lpp/2 − f·Lpp.
 
 pub mod body_plan;
+mod chunked;
 pub mod generate;
 mod hydrostatics;
 pub mod import;
@@ -14,7 +15,7 @@ mod load;
 mod offsets_csv;
 mod schema;
 mod section;
-mod validate;
+pub(crate) mod validate;
 
 use std::path::{Path, PathBuf};
 
@@ -104,6 +105,8 @@ pub struct Hull {
     /// The offsets CSV file the stations came from, when the hull file names one (`[offsets_csv]`).
     pub offsets_file: Option<PathBuf>,
     interpolator: SectionInterpolator,
+    /// The hydrostatics of each loading, computed when the hull was read (its checks need them).
+    hydrostatics: Vec<Hydrostatics>,
 }
 
 impl Hull {
@@ -150,6 +153,24 @@ impl Hull {
             )));
         }
         Ok(self.interpolator.section_at(&self.stations, x))
+    }
+
+    /// The sections at `xs`, all between stations `k` and `k + 1` (as [`Hull::section_at`] at each, with
+    /// the interpolation work of the interval shared).
+    pub(crate) fn sections_in_interval(&self, k: usize, xs: &[f64]) -> Vec<Section> {
+        self.interpolator
+            .sections_in_interval(&self.stations, k, xs)
+    }
+
+    /// The hydrostatics of `loading`: for one of the hull's own loadings those computed when the file was
+    /// read (a hull of many stations need not be integrated twice), for any other loading computed now.
+    /// (A hull read from a file is not meant to have its stations changed afterwards; after such a change
+    /// use [`Hydrostatics::compute`].)
+    pub fn hydrostatics(&self, loading: &LoadingCondition) -> Hydrostatics {
+        match self.loadings.iter().position(|l| l == loading) {
+            Some(i) if i < self.hydrostatics.len() => self.hydrostatics[i].clone(),
+            _ => Hydrostatics::compute(self, loading),
+        }
     }
 
     /// A loading condition by name, or the first (default) one.

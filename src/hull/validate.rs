@@ -18,6 +18,10 @@ fn fault(point: usize, coord: Option<usize>, message: String) -> SectionFault {
     }
 }
 
+/// Largest offset coordinate accepted, m: the longest Lpp accepted (no ship is wider or deeper than
+/// long), so that offsets typed in millimetres are caught.
+const COORD_MAX: f64 = super::load::LPP_MAX;
+
 /// Tolerance for "on the centreline" and for coincident points, m.
 const TOL: f64 = 1e-9;
 
@@ -46,6 +50,20 @@ pub(crate) fn check_section(points: &[[f64; 2]]) -> Result<(), SectionFault> {
                     i,
                     Some(c),
                     format!("point {}: {name} = {} is not a finite number", i + 1, p[c]),
+                ));
+            }
+        }
+        for (c, name) in [(0, "y"), (1, "z")] {
+            if p[c].abs() > COORD_MAX {
+                return Err(fault(
+                    i,
+                    Some(c),
+                    format!(
+                        "point {}: {name} = {} m is larger than any ship (at most {COORD_MAX} m); offsets are in \
+                         metres",
+                        i + 1,
+                        crate::input::num(p[c])
+                    ),
                 ));
             }
         }

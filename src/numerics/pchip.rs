@@ -38,25 +38,7 @@ impl Pchip {
             x.windows(2).all(|w| w[1] > w[0]),
             "pchip: x must be strictly increasing"
         );
-        let n = x.len();
-        let mut d = vec![0.0; n];
-        if n == 2 {
-            let s = (y[1] - y[0]) / (x[1] - x[0]);
-            d[0] = s;
-            d[1] = s;
-        } else if n > 2 {
-            let h: Vec<f64> = x.windows(2).map(|w| w[1] - w[0]).collect();
-            let del: Vec<f64> = (0..n - 1).map(|k| (y[k + 1] - y[k]) / h[k]).collect();
-            for k in 1..n - 1 {
-                if del[k - 1] * del[k] > 0.0 {
-                    let w1 = 2.0 * h[k] + h[k - 1];
-                    let w2 = h[k] + 2.0 * h[k - 1];
-                    d[k] = (w1 + w2) / (w1 / del[k - 1] + w2 / del[k]);
-                }
-            }
-            d[0] = end_slope(h[0], h[1], del[0], del[1]);
-            d[n - 1] = end_slope(h[n - 2], h[n - 3], del[n - 2], del[n - 3]);
-        }
+        let d = (0..x.len()).map(|k| knot_slope(x, y, k)).collect();
         Self {
             x: x.to_vec(),
             y: y.to_vec(),
@@ -144,7 +126,58 @@ impl Pchip {
     }
 }
 
-fn hermite_basis(s: f64) -> (f64, f64, f64, f64) {
+/// The slope of the PCHIP through (x, y) at knot `k`, from the knot's neighbours only (two on each side
+/// at most): the slopes [`Pchip::new`] uses, so that a caller that needs the interpolant on one interval
+/// only can evaluate it from a window of four knots around the interval without building the whole.
+pub fn knot_slope(x: &[f64], y: &[f64], k: usize) -> f64 {
+    let n = x.len();
+    if n < 2 {
+        return 0.0;
+    }
+    // Only the (up to) three intervals next to knot k matter.
+    let lo = k.saturating_sub(2).min(n - 2);
+    let hi = (k + 2).min(n - 1);
+    let mut h = [0.0; 4];
+    let mut del = [0.0; 4];
+    for i in lo..hi {
+        h[i - lo] = x[i + 1] - x[i];
+        del[i - lo] = (y[i + 1] - y[i]) / h[i - lo];
+    }
+    slope_from(
+        &h[..hi - lo],
+        &del[..hi - lo],
+        k - lo,
+        n == 2,
+        k == 0,
+        k == n - 1,
+    )
+}
+
+/// The PCHIP slope at knot `k` of a run of intervals with lengths `h` and secant slopes `del` (knot k
+/// is the left end of interval k of the run); `two` when the whole interpolant has two knots, `first` and
+/// `last` when k is its first or last knot. The formula of [`knot_slope`], for callers that share `h`.
+pub fn slope_from(h: &[f64], del: &[f64], k: usize, two: bool, first: bool, last: bool) -> f64 {
+    if two {
+        return del[0];
+    }
+    if first {
+        return end_slope(h[k], h[k + 1], del[k], del[k + 1]);
+    }
+    if last {
+        return end_slope(h[k - 1], h[k - 2], del[k - 1], del[k - 2]);
+    }
+    let (d0, d1) = (del[k - 1], del[k]);
+    if d0 * d1 > 0.0 {
+        let w1 = 2.0 * h[k] + h[k - 1];
+        let w2 = h[k] + 2.0 * h[k - 1];
+        (w1 + w2) / (w1 / d0 + w2 / d1)
+    } else {
+        0.0
+    }
+}
+
+/// The cubic Hermite basis (h00, h10, h01, h11) at the local coordinate s ∈ [0, 1] of an interval.
+pub fn hermite_basis(s: f64) -> (f64, f64, f64, f64) {
     let s2 = s * s;
     let s3 = s2 * s;
     (

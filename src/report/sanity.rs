@@ -24,6 +24,40 @@ pub fn negative_gm(h: &Hydrostatics) -> Vec<String> {
     w
 }
 
+/// Largest waterline beam over Lpp that is not called implausible: no ship is wider than it is long.
+pub const MAX_BEAM_OVER_LPP: f64 = 1.0;
+
+/// Warnings for a hull form no ship has, each with the number that triggered it: a block coefficient
+/// above 1 (more displacement than the box Lpp x B x T holds: offsets that run far aft of the AP or
+/// forward of the FP, or a length or draft that does not belong to them), and a waterline beam above
+/// [`MAX_BEAM_OVER_LPP`] times Lpp (offsets in the wrong unit).
+pub fn implausible_form(h: &Hydrostatics, x_range: (f64, f64)) -> Vec<String> {
+    let mut w = Vec::new();
+    let l = h.lpp_m;
+    if h.cb > 1.0 + 1e-6 {
+        let (aft, fwd) = (-x_range.0 - 0.5 * l, x_range.1 - 0.5 * l);
+        w.push(format!(
+            "loading '{}': block coefficient Cb = {:.3} is above 1: the immersed hull is larger than the box Lpp x \
+             B x T it should fit in; the offsets reach {:.3} m aft of the AP and {:.3} m forward of the FP \
+             (Lpp = {l} m): check lpp_m and the stations' x",
+            h.loading,
+            h.cb,
+            aft.max(0.0),
+            fwd.max(0.0)
+        ));
+    }
+    if h.beam_wl_m > MAX_BEAM_OVER_LPP * l {
+        w.push(format!(
+            "loading '{}': the waterline beam {:.4} m is {:.1} times Lpp ({l} m): no ship is wider than it is \
+             long; check the units of the offsets (metres)",
+            h.loading,
+            h.beam_wl_m,
+            h.beam_wl_m / l
+        ));
+    }
+    w
+}
+
 /// Relative error of the variance (m0) of `sea`'s spectrum sampled with `n` points over the window the
 /// motions analysis uses (0.4 to 3.5 times the peak frequency), against a fine sampling of that window.
 pub fn spectrum_sampling_error(sea: &IrregularSea, n: usize) -> f64 {

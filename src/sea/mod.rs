@@ -179,7 +179,7 @@ impl SeaState {
                 .into());
         }
         Ok(Self {
-            name: raw.name.get_ref().trim().to_string(),
+            name: crate::output_policy::escape_control(raw.name.get_ref().trim()),
             description: raw.description,
             water_depth_m: depth,
             speeds,

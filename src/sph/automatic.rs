@@ -169,8 +169,15 @@ pub fn sensor_top_height(section: &Section, sensors: &[SensorSpec]) -> Option<f6
 /// For a section that starts immersed to the keel depth `d0` (0 for a keel entry), depths count from the
 /// start: the wetting uses Wagner's condition with the initial immersion
 /// ([`crate::analytic::entry_kinematics`]), and the cap is the keel 0.9 of the height deep in all.
+/// Longest automatic end time, s.
+pub const T_END_MAX_S: f64 = 60.0;
+
+/// The words of the end-time note when the keel never reaches the depth the impact needs within
+/// [`T_END_MAX_S`] (a creeping or rising body): the run would end before any impact.
+pub const NEVER_DEEP_ENOUGH: &str = "the keel never gets";
+
 pub fn end_time(section: &Section, m: &Motion, sensors: &[SensorSpec], dp: f64, d0: f64) -> Choice {
-    let t_max = 60.0;
+    let t_max = T_END_MAX_S;
     let (y_target, what) = wetting_target(section, sensors);
     let min_depth = MIN_PENETRATION_DP * dp;
     let wet = if d0 > 0.0 {
@@ -224,7 +231,7 @@ pub fn end_time(section: &Section, m: &Motion, sensors: &[SensorSpec], dp: f64, 
         None => Choice {
             value: t_max,
             note: format!(
-                "t_end = {t_max} s: the keel never gets {depth:.4} m deep within that time"
+                "t_end = {t_max} s: {NEVER_DEEP_ENOUGH} {depth:.4} m deep within that time"
             ),
         },
     }

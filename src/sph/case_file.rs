@@ -120,6 +120,46 @@ struct SensorFile {
     width_m: Spanned<f64>,
 }
 
+/// Most points accepted in a section contour.
+pub const MAX_SECTION_POINTS: usize = 10_000;
+/// Most rows accepted in a velocity table.
+pub const MAX_TABLE_ROWS: usize = 100_000;
+/// Most sensors accepted in a case.
+pub const MAX_SENSORS: usize = 1_000;
+
+/// A section contour from a case file under the rules of a hull file's stations
+/// ([`crate::hull::validate::check_section`]): finite, y ≥ 0, z never falling from keel to deck (no
+/// zig-zag), no repeated point, no self-overlap; at most [`MAX_SECTION_POINTS`] points. As in
+/// [`Section::from_half_points`], a keel point on the centreline is added when the first point is off it.
+fn check_points(src: &SourceText, p: &Spanned<Vec<[f64; 2]>>) -> Result<()> {
+    let given = p.get_ref();
+    if given.len() > MAX_SECTION_POINTS {
+        return Err(src
+            .error(
+                p,
+                format!(
+                    "the section has {} points, more than the {MAX_SECTION_POINTS} accepted",
+                    given.len()
+                ),
+            )
+            .into());
+    }
+    let mut pts = given.clone();
+    let added = pts.first().is_some_and(|q| q[0] > 0.0);
+    if added {
+        pts.insert(0, [0.0, pts[0][1]]);
+    }
+    crate::hull::validate::check_section(&pts).map_err(|f| {
+        let note = if added {
+            " (counting the keel point added on the centreline as point 1)"
+        } else {
+            ""
+        };
+        src.error(p, format!("section points: {}{note}", f.message))
+    })?;
+    Ok(())
+}
+
 /// Read and resolve a case file. Every problem is reported with its file, line and column.
 pub fn from_file(path: &Path) -> Result<Setup> {
     let src = SourceText::read(path)?;
@@ -159,8 +199,11 @@ pub fn from_source(src: &SourceText) -> Result<Setup> {
             Section::wedge(beta.to_radians(), hb, height)
                 .map_err(|e| src.error(w, e.to_string()))?
         }
-        (None, Some(p)) => Section::from_half_points(p.get_ref().clone())
-            .map_err(|e| src.error(p, e.to_string()))?,
+        (None, Some(p)) => {
+            check_points(src, p)?;
+            Section::from_half_points(p.get_ref().clone())
+                .map_err(|e| src.error(p, e.to_string()))?
+        }
         _ => {
             return Err(Error::Input(src.error_at(
                 0..0,
@@ -196,6 +239,17 @@ pub fn from_source(src: &SourceText) -> Result<Setup> {
                     .error(table, "the velocity table needs at least two rows")
                     .into());
             }
+            if rows.len() > MAX_TABLE_ROWS {
+                return Err(src
+                    .error(
+                        table,
+                        format!(
+                            "the velocity table has {} rows, more than the {MAX_TABLE_ROWS} accepted",
+                            rows.len()
+                        ),
+                    )
+                    .into());
+            }
             for (k, r) in rows.iter().enumerate() {
                 if !r[0].is_finite() || !r[1].is_finite() {
                     return Err(src
@@ -211,6 +265,20 @@ pub fn from_source(src: &SourceText) -> Result<Setup> {
                         .into());
                 }
             }
+            // Velocities are positive downward: a table that never goes down never enters the water.
+            if rows.iter().all(|r| r[1] <= 0.0) {
+                let v = rows.iter().map(|r| r[1]).fold(f64::NEG_INFINITY, f64::max);
+                return Err(src
+                    .error(
+                        table,
+                        format!(
+                            "the velocity table never moves the section down (the largest velocity is {} m/s; \
+                             velocities are positive downward, into the water): flip the sign of the velocities",
+                            crate::input::num(v)
+                        ),
+                    )
+                    .into());
+            }
             MotionSpec::Prescribed {
                 table: rows.clone(),
             }
@@ -220,6 +288,17 @@ pub fn from_source(src: &SourceText) -> Result<Setup> {
             speed_m_s: need(&m.speed_m_s, "speed_m_s")?,
         },
     };
+    if f.sensor.len() > MAX_SENSORS {
+        return Err(src
+            .error_at(
+                0..0,
+                format!(
+                    "{} sensors, more than the {MAX_SENSORS} accepted",
+                    f.sensor.len()
+                ),
+            )
+            .into());
+    }
     let mut sensors = Vec::new();
     for s in &f.sensor {
         sensors.push(SensorSpec {

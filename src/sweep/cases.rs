@@ -15,6 +15,13 @@ use crate::input::num;
 /// Most cases a sweep may have (a typo in a step should not start a billion runs).
 pub const MAX_CASES: usize = 1_000_000;
 
+/// The range of the hull scale factors (`flare_scale`, `deadrise_scale`, `length_scale`, `beam_scale`)
+/// a sweep accepts: a factor of ten either way is already far outside any design study.
+pub const SCALE_RANGE: (f64, f64) = (0.1, 10.0);
+
+/// Highest speed a sweep accepts, m/s (as a sea-state file's `speeds_m_s`).
+pub const MAX_SPEED_M_S: f64 = 100.0;
+
 /// One value of one parameter, with where it comes from in the sweep file.
 #[derive(Debug, Clone)]
 pub struct Value {
@@ -85,6 +92,18 @@ fn check_value(f: &SweepFile, name: &str, x: f64, span: Range<usize>) -> Result<
         "flare_scale" | "deadrise_scale" | "length_scale" | "beam_scale" if x <= 0.0 => {
             Err(bad("a scale factor must be positive"))
         }
+        "flare_scale" | "deadrise_scale" | "length_scale" | "beam_scale"
+            if !(SCALE_RANGE.0..=SCALE_RANGE.1).contains(&x) =>
+        {
+            Err(bad(&format!(
+                "a scale factor between {} and {} keeps a hull a ship (beyond it the variant is another \
+                 object, and its pressures mean nothing)",
+                SCALE_RANGE.0, SCALE_RANGE.1
+            )))
+        }
+        "speed_m_s" if x > MAX_SPEED_M_S => Err(bad(&format!(
+            "speeds lie between 0 and {MAX_SPEED_M_S} m/s (the limit of a sea-state file)"
+        ))),
         _ => Ok(()),
     }
 }

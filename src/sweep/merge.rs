@@ -3,10 +3,15 @@
 //! same tool version; a case present in two shards must have the same content key in both. The merged
 //! result is the one an unsharded run gives (the same cases in the same order, the same tables).
 
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
+use super::cases::MAX_CASES;
 use super::results::SweepResult;
 use crate::error::{Error, Result};
+
+/// Largest shard file read, bytes (a million cases at a few hundred bytes each, with room).
+pub const MAX_SHARD_BYTES: u64 = 4 << 30;
 
 /// Read the `sweep.json` of a shard's folder.
 pub fn read(dir: &Path) -> Result<SweepResult> {
@@ -15,6 +20,16 @@ pub fn read(dir: &Path) -> Result<SweepResult> {
     } else {
         dir.to_path_buf()
     };
+    if let Ok(m) = std::fs::metadata(&p)
+        && m.len() > MAX_SHARD_BYTES
+    {
+        return Err(Error::Invalid(format!(
+            "{}: {} bytes is more than the sweep.json of a sweep of at most {MAX_CASES} cases can be \
+             ({MAX_SHARD_BYTES} bytes accepted)",
+            p.display(),
+            m.len()
+        )));
+    }
     let text = std::fs::read_to_string(&p).map_err(|e| Error::io(&p, e))?;
     serde_json::from_str(&text).map_err(|e| {
         Error::Invalid(format!(
@@ -22,6 +37,12 @@ pub fn read(dir: &Path) -> Result<SweepResult> {
             p.display()
         ))
     })
+}
+
+/// The first 12 characters of a hash or key from a file, for a message (a short or tampered value is
+/// shown as it is, never cut inside a character).
+fn short(s: &str) -> String {
+    crate::output_policy::escape_control(&s.chars().take(12).collect::<String>())
 }
 
 /// Merge shard results; returns the merged result and the warnings (missing cases).
@@ -50,39 +71,62 @@ pub fn merge(dirs: &[PathBuf]) -> Result<SweepResult> {
                 r.name,
                 dirs[0].display(),
                 first.name,
-                &r.sweep_hash[..12],
-                &first.sweep_hash[..12]
+                short(&r.sweep_hash),
+                short(&first.sweep_hash)
             )));
         }
     }
-    let mut slots: Vec<Option<super::results::CaseResult>> = vec![None; first.total_cases];
+    for (d, r) in dirs.iter().zip(&parts) {
+        if r.total_cases > MAX_CASES || r.total_cases != first.total_cases {
+            return Err(Error::Invalid(format!(
+                "{}: total_cases = {} {}: the sweep.json is damaged or from another sweep",
+                d.display(),
+                r.total_cases,
+                if r.total_cases > MAX_CASES {
+                    format!("is more than a sweep can have ({MAX_CASES})")
+                } else {
+                    format!(
+                        "differs from {} in {}",
+                        first.total_cases,
+                        dirs[0].display()
+                    )
+                }
+            )));
+        }
+    }
+    // Only the cases present are held (a damaged count never allocates).
+    let mut slots: BTreeMap<usize, super::results::CaseResult> = BTreeMap::new();
     for (d, r) in dirs.iter().zip(&parts) {
         for c in &r.cases {
-            let slot = slots.get_mut(c.index).ok_or_else(|| {
-                Error::Invalid(format!(
-                    "{}: case {} is outside the sweep's {} cases",
+            if c.index >= first.total_cases {
+                return Err(Error::Invalid(format!(
+                    "{}: case {} (index {}) is outside the sweep's {} cases",
                     d.display(),
-                    c.id,
+                    crate::output_policy::escape_control(&c.id),
+                    c.index,
                     first.total_cases
-                ))
-            })?;
-            match slot {
+                )));
+            }
+            match slots.get(&c.index) {
                 Some(old) if old.key != c.key => {
                     return Err(Error::Invalid(format!(
                         "{}: case {} differs from the same case in another shard (content key {}… vs {}…)",
                         d.display(),
                         c.id,
-                        &c.key[..12],
-                        &old.key[..12]
+                        short(&c.key),
+                        short(&old.key)
                     )));
                 }
                 Some(_) => {}
-                None => *slot = Some(c.clone()),
+                None => {
+                    slots.insert(c.index, c.clone());
+                }
             }
         }
     }
-    let missing: Vec<usize> = (0..slots.len()).filter(|&i| slots[i].is_none()).collect();
-    let cases: Vec<_> = slots.into_iter().flatten().collect();
+    let missing_count = first.total_cases - slots.len();
+    let first_missing = (0..first.total_cases).find(|i| !slots.contains_key(i));
+    let cases: Vec<_> = slots.into_values().collect();
     let mut warnings: Vec<String> = Vec::new();
     for c in &cases {
         for w in &c.warnings {
@@ -91,13 +135,11 @@ pub fn merge(dirs: &[PathBuf]) -> Result<SweepResult> {
             }
         }
     }
-    if !missing.is_empty() {
+    if let Some(first_missing) = first_missing {
         warnings.push(format!(
-            "{} of the sweep's {} cases are missing from the shards given (first missing: case index {}): \
-             is a shard missing or unfinished?",
-            missing.len(),
+            "{missing_count} of the sweep's {} cases are missing from the shards given (first missing: case \
+             index {first_missing}): is a shard missing or unfinished?",
             first.total_cases,
-            missing[0]
         ));
     }
     Ok(SweepResult {

@@ -220,6 +220,44 @@ fn import_grid(path: &Path, opts: &ImportOptions) -> Result<Imported> {
     Ok(imported)
 }
 
+/// Most triangles accepted in an STL surface (a detailed hull has some hundred thousand).
+pub const MAX_STL_TRIANGLES: usize = 10_000_000;
+
+/// A binary STL (one that does not start with "solid") must be as long as its triangle count says and
+/// hold at most [`MAX_STL_TRIANGLES`]; checked before reading, so that a truncated file is reported as
+/// such (not as "failed to fill whole buffer") and a damaged count never allocates.
+fn check_binary_stl_size(path: &Path, bytes: &[u8]) -> Result<()> {
+    if bytes.starts_with(b"solid") {
+        return Ok(());
+    }
+    if bytes.len() < 84 {
+        return Err(Error::Invalid(format!(
+            "{}: {} bytes is too short for a binary STL file (an 80-byte header and a 4-byte triangle count \
+             come first) and it is not ASCII STL (which starts with 'solid'): the file is empty or cut short",
+            path.display(),
+            bytes.len()
+        )));
+    }
+    let n = u32::from_le_bytes([bytes[80], bytes[81], bytes[82], bytes[83]]) as usize;
+    if n > MAX_STL_TRIANGLES {
+        return Err(Error::Invalid(format!(
+            "{}: the binary STL header gives {n} triangles, more than the {MAX_STL_TRIANGLES} accepted",
+            path.display()
+        )));
+    }
+    let need = 84 + 50 * n;
+    if bytes.len() < need {
+        return Err(Error::Invalid(format!(
+            "{}: truncated binary STL: its header gives {n} triangles, which take {need} bytes, but the file has \
+             only {} ({} whole triangles); the file was cut short (copy or export it again)",
+            path.display(),
+            bytes.len(),
+            (bytes.len() - 84) / 50
+        )));
+    }
+    Ok(())
+}
+
 /// Read an STL file (ASCII or binary) into a mesh with shared vertices.
 pub fn read_stl(path: &Path) -> Result<Mesh> {
     let mut bytes = std::fs::read(path).map_err(|e| Error::io(path, e))?;
@@ -232,6 +270,7 @@ pub fn read_stl(path: &Path) -> Result<Mesh> {
             bytes[..80].fill(0);
         }
     }
+    check_binary_stl_size(path, &bytes)?;
     let m = stl_io::read_stl(&mut std::io::Cursor::new(bytes)).map_err(|e| {
         Error::Invalid(format!(
             "{}: not a readable STL file (ASCII or binary): {e}",
@@ -434,7 +473,7 @@ fn resample(imported: &mut Imported, n: usize) -> Result<()> {
         let x = a + (f - a) * i as f64 / (n - 1) as f64;
         stations.push(StationSpec {
             position: Position::X(x),
-            points: hull.section_at(x)?.points,
+            points: tidy(hull.section_at(x)?.points),
         });
     }
     imported.spec.stations = stations;

@@ -80,18 +80,39 @@ fn sha256_of(path: &Path) -> std::io::Result<String> {
     Ok(format!("{:x}", Sha256::digest(&bytes)))
 }
 
-fn load_hull(summary: &Value) -> std::result::Result<Hull, String> {
+/// The assessed hull file: the path in the provenance as written (relative to where `assess` ran), or,
+/// when the report is made from another folder, that path under each folder above the results folder;
+/// the first that exists with the recorded SHA-256 is the one.
+fn load_hull(summary: &Value, dir: &Path) -> std::result::Result<Hull, String> {
     let inputs = list(&summary["provenance"], "inputs");
     let first = inputs.first().ok_or("summary.json names no input files")?;
     let path = PathBuf::from(text(first, "path"));
-    let sha = sha256_of(&path).map_err(|e| format!("hull file {}: {e}", path.display()))?;
-    if sha != text(first, "sha256") {
-        return Err(format!(
-            "hull file {} has changed since the assessment (SHA-256 differs)",
-            path.display()
-        ));
+    let mut candidates = vec![path.clone()];
+    if path.is_relative()
+        && let Ok(d) = dir.canonicalize()
+    {
+        candidates.extend(d.ancestors().map(|a| a.join(&path)));
     }
-    Hull::from_file(&path).map_err(|e| e.to_string())
+    let mut changed = None;
+    for c in candidates.iter().filter(|c| c.is_file()) {
+        match sha256_of(c) {
+            Ok(sha) if sha == text(first, "sha256") => {
+                return Hull::from_file(c).map_err(|e| e.to_string());
+            }
+            _ => changed = changed.or(Some(c.clone())),
+        }
+    }
+    Err(match changed {
+        Some(c) => format!(
+            "hull file {} has changed since the assessment (SHA-256 differs)",
+            c.display()
+        ),
+        None => format!(
+            "hull file {} not found (looked relative to the current folder and to every folder above {})",
+            path.display(),
+            dir.display()
+        ),
+    })
 }
 
 fn read_history(path: &Path) -> Result<Vec<(String, Vec<f64>)>> {
@@ -153,7 +174,7 @@ impl Saved {
             )));
         }
         let motions = read_json(&dir.join("motions.json")).ok();
-        let hull = load_hull(&summary);
+        let hull = load_hull(&summary, dir);
         let mut runs = Vec::new();
         let mut missing = Vec::new();
         for e in list(&summary, "events") {
@@ -162,7 +183,15 @@ impl Saved {
                 runs.push(None);
                 continue;
             }
-            match load_run(&dir.join(folder)) {
+            // A path read back from the results is confined to the results folder.
+            let run_dir = crate::output_policy::confined(dir, folder).map_err(|why| {
+                Error::Invalid(format!(
+                    "{}: the run_folder of an event is refused: {why}; the results folder is damaged \
+                     (run `slamtool assess` again)",
+                    path.display()
+                ))
+            })?;
+            match load_run(&run_dir) {
                 Ok(r) => runs.push(Some(r)),
                 Err(err) => {
                     missing.push(format!("run folder {folder}: {err}"));

@@ -91,15 +91,24 @@ pub fn build(saved: &Saved, stamp: Option<String>) -> Result<Report> {
     Ok(r)
 }
 
+/// Whether `name` is a file a report writes in `figures/` (`NN-<id>.svg|.csv`, `peak_pressure_*.png`).
+pub fn is_report_figure(name: &str) -> bool {
+    let b = name.as_bytes();
+    let numbered = b.len() > 3 && b[0].is_ascii_digit() && b[1].is_ascii_digit() && b[2] == b'-';
+    (numbered && (name.ends_with(".svg") || name.ends_with(".csv")))
+        || (name.starts_with("peak_pressure_") && name.ends_with(".png"))
+}
+
 /// The files a report writes: `report.pdf` and `figures/NN-<id>.svg|.csv|.png` in `out`.
 pub fn write(r: &Report, out: &Path) -> Result<Vec<PathBuf>> {
     let figs = out.join("figures");
     std::fs::create_dir_all(&figs).map_err(|e| crate::error::Error::io(&figs, e))?;
-    // Figures of an earlier report are removed first, so the folder holds this report's only.
+    // Figures of an earlier report are removed first, so the folder holds this report's only; files
+    // named otherwise are not a report's and are left alone.
     if let Ok(entries) = std::fs::read_dir(&figs) {
         for e in entries.flatten() {
             let name = e.file_name().to_string_lossy().into_owned();
-            if name.ends_with(".svg") || name.ends_with(".csv") || name.ends_with(".png") {
+            if is_report_figure(&name) {
                 let _ = std::fs::remove_file(e.path());
             }
         }
