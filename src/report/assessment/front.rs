@@ -242,7 +242,7 @@ pub fn warnings(saved: &Saved) -> Vec<(String, Vec<String>)> {
             add(w.to_string(), Some(label.clone()));
         }
         for q in list(&e["sph"], "sensors") {
-            if text(q, "convergence") == "not_converged" {
+            if text(q, "convergence") == "not_converged" && q["wetted"].as_bool() != Some(false) {
                 add(
                     text(q, "convergence_statement").to_string(),
                     Some(label.clone()),

@@ -40,6 +40,10 @@ fn flags(d: &Value) -> Vec<String> {
 
 fn flags_of_source(d: &Value) -> Vec<String> {
     let mut f: Vec<String> = Vec::new();
+    if text(d, "source") == crate::assess::results::DRY_SOURCE {
+        f.push("the SPH water did not reach it with a slamming pressure: analytic value".into());
+        return f;
+    }
     match d["impact"].as_str() {
         Some("acoustic") => f.push("flat keel: acoustic impact, air cushion not modelled".into()),
         Some("in_transient") => f.push("impact not resolved by SPH at this spacing".into()),
