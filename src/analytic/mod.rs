@@ -10,3 +10,7 @@ pub mod von_karman;
 pub mod wagner;
 pub mod wagner_pressure;
 pub mod zhao_faltinsen1993;
+pub mod similarity;
+mod similarity_bem;
+mod similarity_mesh;
+mod similarity_solver;
