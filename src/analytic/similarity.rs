@@ -1,4 +1,54 @@
-//! Nonlinear similarity solution of constant-speed symmetric wedge entry (DOC TODO).
+//! Nonlinear similarity solution of a symmetric wedge entering calm water at constant speed
+//! (Dobrovol'skaya 1969, J. Fluid Mech. 36, 805-829; computed for 4-81 deg by Zhao & Faltinsen 1993,
+//! J. Fluid Mech. 246, 593-612; an integral-hodograph formulation in Semenov & Iafrati 2006, J. Fluid
+//! Mech. 555, 323-342). Incompressible, irrotational, no gravity, no air, no surface tension.
+//!
+//! **STATUS (issue 28, item 1): work in progress, NOT a reference.** The panel method, the meshes and
+//! the free-surface potential are implemented and tested, but the Newton iteration on the free-surface
+//! shape stalls with a kinematic residual of order 10 (normal velocities there are of order 1-5)
+//! concentrated over a few jet-root thicknesses around the spray root. [`solve`] therefore returns an
+//! error unless the residual is below [`TOLERANCE`]; [`attempt`] returns the unconverged state for
+//! diagnosis only. Nothing in the tool uses this module yet.
+//!
+//! # Formulation (derived here)
+//!
+//! The apex starts at the undisturbed surface at t = 0 and moves down at V. Without gravity there is no
+//! length scale but V t, so with xi = x/(V t), eta = z/(V t) (z up, from the undisturbed level; the apex
+//! is at (0, -1)) the potential is phi(x, z, t) = V^2 t Phi(xi, eta) with Phi harmonic. Then
+//! phi_t = V^2 (Phi - r . grad Phi), r = (xi, eta), grad phi = V grad Phi, and Bernoulli gives
+//!
+//! ```text
+//! Cp = p / (rho V^2 / 2) = -2 (Phi - r . grad Phi + |grad Phi|^2 / 2)
+//!    = |r|^2 - 2 Phi - |grad Phi - r|^2.
+//! ```
+//!
+//! grad Phi - r is the velocity relative to the similarity frame. Conditions:
+//!
+//! * body (eta = -1 + |xi| tan beta, outward normal n): dPhi/dn = (0, -1) . n = -cos beta; the body is
+//!   then also a streamline of the relative flow, and Cp = |r|^2 - 2 Phi at its stagnation point (the
+//!   pressure maximum);
+//! * free surface, kinematic: (grad Phi - r) . n = 0, i.e. dPhi/dn = r . n;
+//! * free surface, dynamic (p = 0): |grad Phi - r|^2 = |r|^2 - 2 Phi. With the kinematic condition the
+//!   relative velocity is tangential, directed from the far field into the jet, so along the surface
+//!   (arc length s towards the jet) dPhi/ds = r . t + sqrt(|r|^2 - 2 Phi), an ODE integrated from Phi = 0
+//!   far away (computed as ((r . n)^2 - 2 Phi) / (sqrt(|r|^2 - 2 Phi) - r . t) where r . t < 0, to avoid
+//!   the cancellation of the far field);
+//! * far field: Phi is a vertical dipole, Phi ~ D eta / |r|^2, so dPhi/dr = -Phi / r on a circle r = R;
+//! * symmetry about xi = 0 (mirror image in the Green's function).
+//!
+//! Given a free-surface shape, Phi on it follows from the ODE (a Dirichlet condition); the Laplace
+//! problem with the body's Neumann condition and the far-field Robin condition is solved by the panel
+//! method of `similarity_bem`, and the kinematic residual q - r . n on every free-surface panel is the
+//! equation for the shape: the unknowns are the normal displacements of the free-surface nodes, solved
+//! by Newton's method with a finite-difference Jacobian and a backtracking line search, the mesh being
+//! rebuilt around the current spray root between Newton rounds. The jet is cut (Zhao & Faltinsen's own
+//! practice) a number of root thicknesses beyond the root, normal to the body, where the flow leaves
+//! along the body at the jet's free-surface speed: dPhi/dn = r . t_b + sqrt(|r|^2 - 2 Phi).
+//!
+//! Outputs (once converged): Cp along the wetted side against z/(V t) (z from the undisturbed surface,
+//! apex at -1, as in Zhao & Faltinsen and `../shared/reference/water_entry_theory.md`), the maximum and
+//! its position, the spray root (the turning point of the free surface, its smallest abscissa) and the
+//! vertical force F / (rho V^3 t) = integral of Cp d(xi) over one side (both sides together).
 
 use super::similarity_mesh::root_node;
 use super::similarity_solver::{self as solver, Grid, Shape};
@@ -43,12 +93,30 @@ pub fn solve(deadrise_deg: f64) -> Result<Similarity> {
     solve_with(deadrise_deg, &DEFAULT_GRID)
 }
 
-/// Solves for a deadrise in degrees on a given grid.
+/// Largest kinematic residual accepted as converged.
+pub const TOLERANCE: f64 = 1e-6;
+
+/// Solves for a deadrise in degrees on a given grid; an error unless the Newton iteration converged
+/// (residual below [`TOLERANCE`]).
 pub fn solve_with(deadrise_deg: f64, grid: &Grid) -> Result<Similarity> {
+    let s = attempt(deadrise_deg, grid)?;
+    if s.residual > TOLERANCE {
+        return Err(Error::Numerical(format!(
+            "similarity solution at {deadrise_deg} deg not converged: kinematic residual {:.3e} \
+             (tolerance {TOLERANCE:.0e}) at the spray root",
+            s.residual
+        )));
+    }
+    Ok(s)
+}
+
+/// The state of the iteration for a deadrise in degrees, converged or not (for diagnosis: check
+/// [`Similarity::residual`]).
+pub fn attempt(deadrise_deg: f64, grid: &Grid) -> Result<Similarity> {
     check_deadrise(deadrise_deg)?;
     let beta = deadrise_deg.to_radians();
     let mut sh = solver::first_guess(beta, grid);
-    let tol = 1e-9;
+    let tol = 0.1 * TOLERANCE;
     let mut res = f64::MAX;
     for _ in 0..6 {
         let root_before = sh.body_s(sh.fs[root_node(&sh.fs)]);
@@ -63,13 +131,18 @@ pub fn solve_with(deadrise_deg: f64, grid: &Grid) -> Result<Similarity> {
     post(&sh, grid, deadrise_deg, res)
 }
 
-/// Error unless 5 <= deadrise <= 60 deg... (range TBD)
+/// Deadrise range attempted (deg).
+pub const DEADRISE_RANGE_DEG: (f64, f64) = (5.0, 60.0);
+
+/// An error unless the deadrise (deg) is within [`DEADRISE_RANGE_DEG`].
 pub fn check_deadrise(deg: f64) -> Result<()> {
-    if deg.is_finite() && (2.0..=75.0).contains(&deg) {
+    let (lo, hi) = DEADRISE_RANGE_DEG;
+    if deg.is_finite() && (lo..=hi).contains(&deg) {
         Ok(())
     } else {
         Err(Error::Invalid(format!(
-            "the similarity solution is computed for a deadrise from 2 to 75 deg, got {deg} deg"
+            "the similarity solution is attempted for a deadrise from {lo} to {hi} deg, got {} deg",
+            crate::input::num(deg)
         )))
     }
 }
@@ -102,10 +175,11 @@ fn post(sh: &Shape, grid: &Grid, deg: f64, residual: f64) -> Result<Similarity> 
         pressure.push([r[1], cp]);
         force += cp * (sh.body[i + 1] - sh.body[i]) * tb[0];
     }
-    let (k, _) = pressure
-        .iter()
-        .enumerate()
-        .fold((0, f64::MIN), |b, (k, p)| if p[1] > b.1 { (k, p[1]) } else { b });
+    let (k, _) =
+        pressure.iter().enumerate().fold(
+            (0, f64::MIN),
+            |b, (k, p)| if p[1] > b.1 { (k, p[1]) } else { b },
+        );
     let (z_cp_max, cp_max) = if k > 0 && k + 1 < nb {
         parabola_peak(pressure[k - 1], pressure[k], pressure[k + 1])
     } else {
@@ -148,15 +222,42 @@ fn parabola_peak(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> (f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::analytic::zhao_faltinsen1993 as zf;
 
     #[test]
-    #[ignore]
-    fn explore() {
-        for deg in [20.0] {
+    fn bad_deadrise_is_an_error() {
+        for d in [0.0, -10.0, 4.0, 61.0, 90.0, f64::NAN, f64::INFINITY] {
+            assert!(solve(d).is_err(), "{d}");
+        }
+    }
+
+    /// The acceptance check of issue 28 at 20 deg. Today the iteration does not converge and `solve`
+    /// must say so; if it converges, the values must be Zhao & Faltinsen's within 1 % and 2 %.
+    #[test]
+    fn twenty_degrees_converges_to_zhao_faltinsen_or_says_it_did_not() {
+        match solve(zf::DEADRISE_DEG) {
+            Ok(s) => {
+                assert!((s.cp_max / zf::CP_MAX - 1.0).abs() < 0.01, "{}", s.cp_max);
+                assert!(
+                    (s.z_cp_max / zf::Z_OVER_VT - 1.0).abs() < 0.02,
+                    "{}",
+                    s.z_cp_max
+                );
+            }
+            Err(e) => assert!(e.to_string().contains("not converged"), "{e}"),
+        }
+    }
+
+    /// Prints the unconverged state (cargo test --release --lib similarity -- --ignored --nocapture).
+    #[test]
+    #[ignore = "diagnostic print of the unconverged iteration"]
+    fn print_attempt() {
+        for deg in [10.0, 20.0, 30.0, 45.0] {
             let t = std::time::Instant::now();
-            let s = solve(deg).unwrap();
+            let s = attempt(deg, &DEFAULT_GRID).unwrap();
             eprintln!(
-                "{deg}: cp {:.4} at {:.4}, root {:?} body z {:.4} thick {:.4} F {:.4} res {:.2e} panels {} ({:?})",
+                "{deg}: Cp_max {:.4} at z/Vt {:.4}, root {:?} (body z {:.4}, thickness {:.4}), \
+                 F/(rho V^3 t) {:.3}, residual {:.2e}, {} panels, {:?}",
                 s.cp_max,
                 s.z_cp_max,
                 s.root,

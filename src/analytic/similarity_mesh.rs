@@ -70,8 +70,7 @@ pub fn resample(p: &[[f64; 2]], at: &[f64]) -> Vec<[f64; 2]> {
     // Coincident nodes dropped first.
     let mut q: Vec<[f64; 2]> = Vec::with_capacity(p.len());
     for &v in p {
-        if q
-            .last()
+        if q.last()
             .is_none_or(|l: &[f64; 2]| (v[0] - l[0]).hypot(v[1] - l[1]) > 1e-12)
         {
             q.push(v);
