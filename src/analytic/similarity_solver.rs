@@ -299,17 +299,22 @@ pub fn remesh(sh: &Shape, grid: &Grid) -> Shape {
     }
 }
 
-/// First guess: Wagner's contact point (height pi/2 - 1 above the undisturbed level), a jet of
-/// thickness d0 = 0.3 min(tan^2 beta, 1) there thinning along the body, an outer surface
-/// eta = eta_r (xi_r / xi)^2 out to the far field.
+/// First guess: Wagner's free surface of the wedge, eta = (xi / k) asin(k / xi) - 1 for xi > k,
+/// k = pi / (2 tan beta) (from the flat-plate vertical velocity V (|x| / sqrt(x^2 - c^2) - 1) with
+/// c = k V t integrated in time; vertical at the contact point, where it meets the body at height
+/// pi/2 - 1), moved off the body by a jet thickness d0 = 0.3 min(tan^2 beta, 1), with a jet of that
+/// thickness along the body thinning towards the cut.
 pub fn first_guess(beta: f64, grid: &Grid) -> Shape {
-    let s_r = (0.5 * std::f64::consts::PI) / beta.sin();
-    let far = grid.far * s_r;
+    let k = 0.5 * std::f64::consts::PI / beta.tan();
     let d0 = 0.3 * beta.tan().powi(2).min(1.0);
-    let s_cut = s_r + grid.jet * d0;
+    let shift = d0 / beta.sin();
+    let far = grid.far * k.hypot(1.0);
     let tb = [beta.cos(), beta.sin()];
     let nf = [beta.sin(), -beta.cos()];
     let bp = |s: f64| [s * tb[0], -1.0 + s * tb[1]];
+    let pr = [k + shift, 0.5 * std::f64::consts::PI - 1.0];
+    let s_r = pr[0] * tb[0] + (pr[1] + 1.0) * tb[1];
+    let s_cut = s_r + grid.jet * d0;
     let mut pts = Vec::new();
     let m = 60;
     for i in 0..m {
@@ -318,18 +323,18 @@ pub fn first_guess(beta: f64, grid: &Grid) -> Shape {
         let b = bp(s);
         pts.push([b[0] + d * nf[0], b[1] + d * nf[1]]);
     }
-    let b = bp(s_r);
-    let pr = [b[0] + d0 * nf[0], b[1] + d0 * nf[1]];
-    let mo = 200;
+    let mo = 400;
     for i in 0..=mo {
-        let xi = pr[0] * (far / pr[0]).powf(i as f64 / mo as f64);
+        let u = i as f64 / mo as f64;
+        let x = k * (far / k).powf(u * u);
         let eta = if i == mo {
             0.0
         } else {
-            pr[1] * (pr[0] / xi).powi(2)
+            (x / k) * (k / x).min(1.0).asin() - 1.0
         };
-        pts.push([xi, eta]);
+        pts.push([x + shift, eta]);
     }
+    pts.last_mut().map(|p| p[0] = far);
     let sh = Shape {
         beta,
         s_cut,
