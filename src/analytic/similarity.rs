@@ -3,12 +3,12 @@
 //! J. Fluid Mech. 246, 593-612; an integral-hodograph formulation in Semenov & Iafrati 2006, J. Fluid
 //! Mech. 555, 323-342). Incompressible, irrotational, no gravity, no air, no surface tension.
 //!
-//! **STATUS (issue 28, item 1): work in progress, NOT a reference.** The panel method, the meshes and
-//! the free-surface potential are implemented and tested, but the Newton iteration on the free-surface
-//! shape stalls with a kinematic residual of order 10 (normal velocities there are of order 1-5)
-//! concentrated over a few jet-root thicknesses around the spray root. [`solve`] therefore returns an
-//! error unless the residual is below [`TOLERANCE`]; [`attempt`] returns the unconverged state for
-//! diagnosis only. Nothing in the tool uses this module yet.
+//! **Status.** The Newton iteration converges (kinematic residual below 1e-9) from 10 to 45 deg with the
+//! default first guess; at 5 deg and from 50 deg up it does not converge today, and [`solve`] then
+//! returns an error (never an unconverged value); [`attempt`] returns the iteration's state for
+//! diagnosis. Measured (default grid): 20 deg Cp_max 17.708 at z/(V t) 0.5066 against Zhao & Faltinsen's
+//! 17.77 at 0.5087 (-0.35 %, -0.4 %); halving the panels moves it by +0.13 %, doubling the far-field
+//! radius by +0.01 %, doubling the jet kept by +0.04 %. At 45 deg the largest pressure is at the keel.
 //!
 //! # Formulation (derived here)
 //!
@@ -114,21 +114,64 @@ pub fn solve_with(deadrise_deg: f64, grid: &Grid) -> Result<Similarity> {
 /// [`Similarity::residual`]).
 pub fn attempt(deadrise_deg: f64, grid: &Grid) -> Result<Similarity> {
     check_deadrise(deadrise_deg)?;
+    Ok(from_first_guesses(deadrise_deg, grid)?.1)
+}
+
+/// Iterates from first guesses of root thickness d0 = 0.16 sin(2 beta)^0.6 (close to the converged
+/// values from 10 to 45 deg), then half and twice that, until one converges; the last attempt otherwise.
+/// The converged solution does not depend on the guess (20 deg: d0 = 0.04 and 0.1 give the same Cp_max
+/// to 5 digits).
+fn from_first_guesses(deadrise_deg: f64, grid: &Grid) -> Result<(Shape, Similarity)> {
     let beta = deadrise_deg.to_radians();
-    let mut sh = solver::first_guess(beta, grid);
+    let d = 0.16 * (2.0 * beta).sin().powf(0.6);
+    let mut last = None;
+    for d0 in [d, 0.5 * d, 2.0 * d] {
+        let out = iterate(solver::first_guess(beta, grid, d0), grid)?;
+        if out.1.residual <= TOLERANCE {
+            return Ok(out);
+        }
+        last = Some(out);
+    }
+    last.ok_or_else(|| Error::Numerical("similarity: no first guess".into()))
+}
+
+/// The solution on a grid and on a second grid started from the first's free surface (for
+/// discretisation studies); errors unless both converged.
+pub fn solve_on_two_grids(
+    deadrise_deg: f64,
+    grid: &Grid,
+    finer: &Grid,
+) -> Result<(Similarity, Similarity)> {
+    check_deadrise(deadrise_deg)?;
+    let (sh, a) = from_first_guesses(deadrise_deg, grid)?;
+    let (_, b) = iterate(solver::remesh(&sh, finer), finer)?;
+    for s in [&a, &b] {
+        if s.residual > TOLERANCE {
+            return Err(Error::Numerical(format!(
+                "similarity solution at {deadrise_deg} deg not converged: residual {:.3e}",
+                s.residual
+            )));
+        }
+    }
+    Ok((a, b))
+}
+
+/// Newton rounds with re-meshing around the root until the root stops moving, then a final round.
+fn iterate(mut sh: Shape, grid: &Grid) -> Result<(Shape, Similarity)> {
+    let deadrise_deg = sh.beta.to_degrees();
     let tol = 0.1 * TOLERANCE;
-    let mut res = f64::MAX;
     for _ in 0..6 {
         let root_before = sh.body_s(sh.fs[root_node(&sh.fs)]);
-        res = solver::newton(&mut sh, grid.arc_panels, 12, tol)?;
+        solver::newton(&mut sh, grid.arc_panels, 12, tol)?;
         sh = solver::remesh(&sh, grid);
         let root_after = sh.body_s(sh.fs[root_node(&sh.fs)]);
         if (root_after - root_before).abs() < 1e-4 * root_after {
             break;
         }
     }
-    res = res.min(solver::newton(&mut sh, grid.arc_panels, 12, tol)?);
-    post(&sh, grid, deadrise_deg, res)
+    let res = solver::newton(&mut sh, grid.arc_panels, 12, tol)?;
+    let s = post(&sh, grid, deadrise_deg, res)?;
+    Ok((sh, s))
 }
 
 /// Deadrise range attempted (deg).
@@ -204,6 +247,36 @@ fn post(sh: &Shape, grid: &Grid, deg: f64, residual: f64) -> Result<Similarity> 
     })
 }
 
+/// Deadrise angles of [`table`] (deg): 5 to 60 in steps of 5.
+pub const TABLE_DEG: [f64; 12] = [
+    5.0, 10.0, 15.0, 20.0, 25.0, 30.0, 35.0, 40.0, 45.0, 50.0, 55.0, 60.0,
+];
+
+/// One row of [`table`]: the solution, or why there is none.
+#[derive(Debug, Clone)]
+pub struct TableRow {
+    pub deadrise_deg: f64,
+    pub solution: std::result::Result<Similarity, String>,
+}
+
+/// The similarity solution at each deadrise of `degs` (in parallel), each row converged or carrying
+/// the error.
+pub fn table(degs: &[f64], grid: &Grid) -> Vec<TableRow> {
+    use rayon::prelude::*;
+    degs.par_iter()
+        .map(|&d| TableRow {
+            deadrise_deg: d,
+            solution: solve_with(d, grid).map_err(|e| e.to_string()),
+        })
+        .collect()
+}
+
+/// Wagner's Cp_max = (pi^2/4) cot^2 beta, for comparison.
+pub fn wagner_cp_max(deadrise_deg: f64) -> f64 {
+    let c = 1.0 / deadrise_deg.to_radians().tan();
+    0.25 * std::f64::consts::PI.powi(2) * c * c
+}
+
 /// Vertex of the parabola through three points (x, y).
 fn parabola_peak(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> (f64, f64) {
     let d1 = (b[1] - a[1]) / (b[0] - a[0]);
@@ -231,20 +304,111 @@ mod tests {
         }
     }
 
-    /// The acceptance check of issue 28 at 20 deg. Today the iteration does not converge and `solve`
-    /// must say so; if it converges, the values must be Zhao & Faltinsen's within 1 % and 2 %.
+    /// Zhao & Faltinsen (1993) at 20 deg (`../shared/reference/water_entry_theory.md`): Cp_max within
+    /// 1 %, its height within 2 %.
     #[test]
-    fn twenty_degrees_converges_to_zhao_faltinsen_or_says_it_did_not() {
-        match solve(zf::DEADRISE_DEG) {
-            Ok(s) => {
-                assert!((s.cp_max / zf::CP_MAX - 1.0).abs() < 0.01, "{}", s.cp_max);
-                assert!(
-                    (s.z_cp_max / zf::Z_OVER_VT - 1.0).abs() < 0.02,
-                    "{}",
-                    s.z_cp_max
-                );
-            }
-            Err(e) => assert!(e.to_string().contains("not converged"), "{e}"),
+    fn twenty_degrees_matches_zhao_faltinsen() {
+        let s = solve(zf::DEADRISE_DEG).unwrap();
+        assert!((s.cp_max / zf::CP_MAX - 1.0).abs() < 0.01, "{}", s.cp_max);
+        assert!(
+            (s.z_cp_max / zf::Z_OVER_VT - 1.0).abs() < 0.02,
+            "{}",
+            s.z_cp_max
+        );
+        // The spray root lies above the pressure maximum, the force is positive and below Wagner's
+        // (pi^3/4) cot^2 beta.
+        assert!(s.root_body_z > s.z_cp_max, "{:?}", s.root);
+        let wagner_force = 0.25 * std::f64::consts::PI.powi(3) / 20f64.to_radians().tan().powi(2);
+        assert!(s.force > 0.0 && s.force < wagner_force, "{}", s.force);
+    }
+
+    /// Halving the panel size (root panel and growth rate) moves Cp_max by less than 0.5 % (30 deg, the
+    /// cheaper case; 20 deg is measured in `measure_refinement`).
+    #[test]
+    fn halving_the_panels_moves_cp_max_by_less_than_half_a_percent() {
+        let fine = Grid {
+            h_root: 0.5 * DEFAULT_GRID.h_root,
+            growth: 0.5 * DEFAULT_GRID.growth,
+            ..DEFAULT_GRID
+        };
+        let (a, b) = solve_on_two_grids(30.0, &DEFAULT_GRID, &fine).unwrap();
+        assert!(
+            b.panels > a.panels + a.panels / 2,
+            "{} {}",
+            a.panels,
+            b.panels
+        );
+        let d = (b.cp_max / a.cp_max - 1.0).abs();
+        assert!(d < 0.005, "Cp_max {} -> {} ({d})", a.cp_max, b.cp_max);
+        assert!(
+            (b.z_cp_max / a.z_cp_max - 1.0).abs() < 0.02,
+            "z {} -> {}",
+            a.z_cp_max,
+            b.z_cp_max
+        );
+    }
+
+    /// Towards Wagner's (pi^2/4) cot^2 beta as the deadrise falls: the ratio rises towards 1 from 30 to
+    /// 20 to 10 deg (at 5 deg the iteration does not converge today).
+    #[test]
+    fn cp_max_tends_to_wagner_as_the_deadrise_falls() {
+        let rows = table(&[10.0, 20.0, 30.0], &DEFAULT_GRID);
+        let ratio: Vec<f64> = rows
+            .iter()
+            .map(|r| {
+                let s = r.solution.as_ref().unwrap();
+                s.cp_max / wagner_cp_max(r.deadrise_deg)
+            })
+            .collect();
+        assert!(ratio[0] > ratio[1] && ratio[1] > ratio[2], "{ratio:?}");
+        assert!(ratio[0] < 1.0 && ratio[0] > 0.95, "{ratio:?}");
+    }
+
+    /// The table over 10 to 40 deg: finite, Cp_max and the force falling with the deadrise, the
+    /// maximum's height falling too.
+    #[test]
+    fn table_is_finite_and_monotone() {
+        let rows = table(&[10.0, 25.0, 40.0], &DEFAULT_GRID);
+        let s: Vec<&Similarity> = rows.iter().map(|r| r.solution.as_ref().unwrap()).collect();
+        for w in s.windows(2) {
+            assert!(w[1].cp_max < w[0].cp_max && w[1].force < w[0].force);
+            assert!(w[1].z_cp_max < w[0].z_cp_max);
+        }
+        for x in &s {
+            assert!(
+                x.pressure
+                    .iter()
+                    .all(|p| p[0].is_finite() && p[1].is_finite())
+            );
+        }
+    }
+
+    #[test]
+    #[ignore = "measurement"]
+    fn measure_refinement() {
+        for (h, g, far, jet) in [
+            (0.125, 0.06, 12.0, 8.0),
+            (0.25, 0.12, 24.0, 8.0),
+            (0.25, 0.12, 12.0, 16.0),
+        ] {
+            let grid = Grid {
+                h_root: h,
+                growth: g,
+                far,
+                jet,
+                ..DEFAULT_GRID
+            };
+            let t = std::time::Instant::now();
+            let s = solve_on_two_grids(20.0, &DEFAULT_GRID, &grid).unwrap().1;
+            eprintln!(
+                "h {h} g {g} far {far} jet {jet}: Cp {:.4} z {:.4} F {:.4} res {:.1e} panels {} {:?}",
+                s.cp_max,
+                s.z_cp_max,
+                s.force,
+                s.residual,
+                s.panels,
+                t.elapsed()
+            );
         }
     }
 
@@ -252,7 +416,7 @@ mod tests {
     #[test]
     #[ignore = "diagnostic print of the unconverged iteration"]
     fn print_attempt() {
-        for deg in [10.0, 20.0, 30.0, 45.0] {
+        for deg in [5.0, 20.0, 45.0, 60.0] {
             let t = std::time::Instant::now();
             let s = attempt(deg, &DEFAULT_GRID).unwrap();
             eprintln!(

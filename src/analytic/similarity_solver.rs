@@ -2,6 +2,7 @@
 //! [`crate::analytic::similarity`] for the equations). Private to the analytic module.
 
 use nalgebra::{DMatrix, DVector};
+use rayon::prelude::*;
 
 use super::similarity_bem::{self as bem, Bc, Panel};
 use super::similarity_mesh::{arc_length, graded, resample, root_node};
@@ -204,15 +205,23 @@ pub fn newton(sh: &mut Shape, arc_panels: usize, iters: usize, tol: f64) -> Resu
         if norm(&r0) < tol {
             break;
         }
+        // Finite-difference Jacobian, one column per node (in parallel; each column is independent, so
+        // the result does not depend on the number of threads).
+        let cols: Vec<Result<Vec<f64>>> = (0..n)
+            .into_par_iter()
+            .map(|k| {
+                let l = (sh.fs[k + 1][0] - sh.fs[k][0]).hypot(sh.fs[k + 1][1] - sh.fs[k][1]);
+                let eps = 1e-4 * l;
+                let mut d = vec![0.0; n];
+                d[k] = eps;
+                let rk = evaluate(&moved(sh, &d), arc_panels)?.res;
+                Ok(rk.iter().zip(&r0).map(|(a, b)| (a - b) / eps).collect())
+            })
+            .collect();
         let mut jac = DMatrix::<f64>::zeros(n, n);
-        for k in 0..n {
-            let l = (sh.fs[k + 1][0] - sh.fs[k][0]).hypot(sh.fs[k + 1][1] - sh.fs[k][1]);
-            let eps = 1e-4 * l;
-            let mut d = vec![0.0; n];
-            d[k] = eps;
-            let rk = evaluate(&moved(sh, &d), arc_panels)?.res;
-            for i in 0..n {
-                jac[(i, k)] = (rk[i] - r0[i]) / eps;
+        for (k, c) in cols.into_iter().enumerate() {
+            for (i, v) in c?.into_iter().enumerate() {
+                jac[(i, k)] = v;
             }
         }
         let rhs = DVector::from_iterator(n, r0.iter().map(|v| -v));
@@ -302,11 +311,10 @@ pub fn remesh(sh: &Shape, grid: &Grid) -> Shape {
 /// First guess: Wagner's free surface of the wedge, eta = (xi / k) asin(k / xi) - 1 for xi > k,
 /// k = pi / (2 tan beta) (from the flat-plate vertical velocity V (|x| / sqrt(x^2 - c^2) - 1) with
 /// c = k V t integrated in time; vertical at the contact point, where it meets the body at height
-/// pi/2 - 1), moved off the body by a jet thickness d0 = 0.3 min(tan^2 beta, 1), with a jet of that
+/// pi/2 - 1), moved off the body by `d0` (in V t), with a jet of that
 /// thickness along the body thinning towards the cut.
-pub fn first_guess(beta: f64, grid: &Grid) -> Shape {
+pub fn first_guess(beta: f64, grid: &Grid, d0: f64) -> Shape {
     let k = 0.5 * std::f64::consts::PI / beta.tan();
-    let d0 = 0.3 * beta.tan().powi(2).min(1.0);
     let shift = d0 / beta.sin();
     let far = grid.far * k.hypot(1.0);
     let tb = [beta.cos(), beta.sin()];
