@@ -3,12 +3,15 @@
 //! J. Fluid Mech. 246, 593-612; an integral-hodograph formulation in Semenov & Iafrati 2006, J. Fluid
 //! Mech. 555, 323-342). Incompressible, irrotational, no gravity, no air, no surface tension.
 //!
-//! **Status.** The Newton iteration converges (kinematic residual below 1e-9) from 10 to 45 deg with the
-//! default first guess; at 5 deg and from 50 deg up it does not converge today, and [`solve`] then
-//! returns an error (never an unconverged value); [`attempt`] returns the iteration's state for
-//! diagnosis. Measured (default grid): 20 deg Cp_max 17.708 at z/(V t) 0.5066 against Zhao & Faltinsen's
-//! 17.77 at 0.5087 (-0.35 %, -0.4 %); halving the panels moves it by +0.13 %, doubling the far-field
-//! radius by +0.01 %, doubling the jet kept by +0.04 %. At 45 deg the largest pressure is at the keel.
+//! **Status.** The Newton iteration converges (kinematic residual below 1e-9) from 5 to 55 deg; at
+//! 60 deg it does not today, and [`solve`] then returns an error (never an unconverged value);
+//! [`attempt`] returns the iteration's state for diagnosis. Only 20 and 30 deg have had their
+//! discretisation checked (below and in the tests). Measured (default grid): 20 deg Cp_max 17.708 at
+//! z/(V t) 0.5066 against Zhao & Faltinsen's 17.77 at 0.5087 (-0.35 %, -0.4 %); halving the panels
+//! moves it by +0.13 %, doubling the far-field radius by +0.01 %, doubling the jet kept by +0.04 %.
+//! From 45 deg up the largest pressure is at the keel (the first panel: z/(V t) about -0.905), not
+//! near the spray root. Cp_max / Wagner's (pi^2/4) cot^2 beta: 0.991 at 5 deg, 0.978 at 10 deg,
+//! 0.951 at 20 deg.
 //!
 //! # Formulation (derived here)
 //!
@@ -348,11 +351,11 @@ mod tests {
         );
     }
 
-    /// Towards Wagner's (pi^2/4) cot^2 beta as the deadrise falls: the ratio rises towards 1 from 30 to
-    /// 20 to 10 deg (at 5 deg the iteration does not converge today).
+    /// Towards Wagner's (pi^2/4) cot^2 beta as the deadrise falls: the ratio rises towards 1 from 20 to
+    /// 10 to 5 deg (measured 0.951, 0.978, 0.991).
     #[test]
     fn cp_max_tends_to_wagner_as_the_deadrise_falls() {
-        let rows = table(&[10.0, 20.0, 30.0], &DEFAULT_GRID);
+        let rows = table(&[5.0, 10.0, 20.0], &DEFAULT_GRID);
         let ratio: Vec<f64> = rows
             .iter()
             .map(|r| {
@@ -361,7 +364,7 @@ mod tests {
             })
             .collect();
         assert!(ratio[0] > ratio[1] && ratio[1] > ratio[2], "{ratio:?}");
-        assert!(ratio[0] < 1.0 && ratio[0] > 0.95, "{ratio:?}");
+        assert!(ratio[0] < 1.0 && ratio[0] > 0.98, "{ratio:?}");
     }
 
     /// The table over 10 to 40 deg: finite, Cp_max and the force falling with the deadrise, the
@@ -412,9 +415,32 @@ mod tests {
         }
     }
 
-    /// Prints the unconverged state (cargo test --release --lib similarity -- --ignored --nocapture).
+    /// Issue 28 item 2, measurement only: the modified Logvinovich model's constant-speed wedge peak
+    /// in the closed form the issue gives, pi^2/(4 sin^2 beta) - sin^2 beta, and Wagner's (the
+    /// generalised Wagner model reduces to it for a wedge), over the similarity Cp_max.
     #[test]
-    #[ignore = "diagnostic print of the unconverged iteration"]
+    #[ignore = "measurement"]
+    fn measure_mlm_and_wagner_against_similarity() {
+        for r in table(&TABLE_DEG, &DEFAULT_GRID) {
+            let b = r.deadrise_deg.to_radians();
+            let mlm = 0.25 * std::f64::consts::PI.powi(2) / b.sin().powi(2) - b.sin().powi(2);
+            match r.solution {
+                Ok(s) => eprintln!(
+                    "{:>4}: similarity {:.3}, MLM/similarity {:.3}, Wagner/similarity {:.3}",
+                    r.deadrise_deg,
+                    s.cp_max,
+                    mlm / s.cp_max,
+                    wagner_cp_max(r.deadrise_deg) / s.cp_max
+                ),
+                Err(e) => eprintln!("{:>4}: {e}", r.deadrise_deg),
+            }
+        }
+    }
+
+    /// Prints the iteration's state, converged or not
+    /// (cargo test --release --lib similarity -- --ignored --nocapture).
+    #[test]
+    #[ignore = "diagnostic print of the iteration's state"]
     fn print_attempt() {
         for deg in [5.0, 20.0, 45.0, 60.0] {
             let t = std::time::Instant::now();

@@ -342,7 +342,9 @@ pub fn first_guess(beta: f64, grid: &Grid, d0: f64) -> Shape {
         };
         pts.push([x + shift, eta]);
     }
-    pts.last_mut().map(|p| p[0] = far);
+    if let Some(p) = pts.last_mut() {
+        p[0] = far;
+    }
     let sh = Shape {
         beta,
         s_cut,
