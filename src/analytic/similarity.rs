@@ -129,7 +129,7 @@ fn from_first_guesses(deadrise_deg: f64, grid: &Grid) -> Result<(Shape, Similari
     let d = 0.16 * (2.0 * beta).sin().powf(0.6);
     let mut last = None;
     for d0 in [d, 0.5 * d, 2.0 * d] {
-        let out = iterate(solver::first_guess(beta, grid, d0), grid)?;
+        let out = iterate(solver::first_guess(beta, grid, d0), grid, deadrise_deg)?;
         if out.1.residual <= TOLERANCE {
             return Ok(out);
         }
@@ -147,7 +147,7 @@ pub fn solve_on_two_grids(
 ) -> Result<(Similarity, Similarity)> {
     check_deadrise(deadrise_deg)?;
     let (sh, a) = from_first_guesses(deadrise_deg, grid)?;
-    let (_, b) = iterate(solver::remesh(&sh, finer), finer)?;
+    let (_, b) = iterate(solver::remesh(&sh, finer), finer, deadrise_deg)?;
     for s in [&a, &b] {
         if s.residual > TOLERANCE {
             return Err(Error::Numerical(format!(
@@ -160,8 +160,7 @@ pub fn solve_on_two_grids(
 }
 
 /// Newton rounds with re-meshing around the root until the root stops moving, then a final round.
-fn iterate(mut sh: Shape, grid: &Grid) -> Result<(Shape, Similarity)> {
-    let deadrise_deg = sh.beta.to_degrees();
+fn iterate(mut sh: Shape, grid: &Grid, deadrise_deg: f64) -> Result<(Shape, Similarity)> {
     let tol = 0.1 * TOLERANCE;
     for _ in 0..6 {
         let root_before = sh.body_s(sh.fs[root_node(&sh.fs)]);

@@ -11,15 +11,15 @@ use super::global::JsonArg;
 
 /// Examples at the end of `slamtool similarity --help`.
 pub const EXAMPLES: &str = "\
-Validity: a symmetric wedge entering calm water at constant speed V, potential flow, no gravity, no air;
-the solution is self-similar in x/(V t), z/(V t) (z from the undisturbed surface, keel at z/(V t) = -1).
-A deadrise where the iteration does not converge is reported as such, not estimated.
-
 Examples:
   slamtool similarity --deadrise-deg 20
-  slamtool similarity --deadrise-deg 30 --json
-  slamtool similarity --deadrise-deg 20 -o wedge20-similarity.csv
-  slamtool similarity --table";
+  slamtool similarity --deadrise-deg 20 --json -o wedge20-similarity.csv
+  slamtool similarity --table
+
+Validity: a symmetric wedge entering calm water at constant speed V; potential flow,
+no gravity, no air. The flow is self-similar in x/(V t), z/(V t); z is measured from
+the undisturbed surface (keel at z/(V t) = -1). A deadrise where the iteration does
+not converge is a numerical failure (exit status 3), not an estimate (today: 60 deg).";
 
 #[derive(Debug, Args)]
 pub struct SimilarityArgs {
@@ -30,8 +30,8 @@ pub struct SimilarityArgs {
     #[arg(long, conflicts_with = "deadrise_deg")]
     table: bool,
     /// Write the pressure distribution (or the table) as CSV, with its provenance.
-    #[arg(short = 'o', long)]
-    output: Option<PathBuf>,
+    #[arg(short = 'o', long = "out", value_name = "FILE")]
+    out: Option<PathBuf>,
     #[command(flatten)]
     json: JsonArg,
 }
@@ -63,7 +63,7 @@ pub fn run(a: SimilarityArgs) -> slamtool::Result<()> {
     let deg = a.deadrise_deg.unwrap_or(f64::NAN);
     sim::check_deadrise(deg)?;
     let s = sim::solve(deg)?;
-    if let Some(path) = &a.output {
+    if let Some(path) = &a.out {
         let header = vec!["z_over_vt".to_string(), "cp".to_string()];
         let rows: Vec<Vec<String>> = s
             .pressure
@@ -77,6 +77,8 @@ pub fn run(a: SimilarityArgs) -> slamtool::Result<()> {
         let mut out = summary_json(&s);
         out["tool"] = TOOL.into();
         out["provenance"] = serde_json::to_value(&prov).unwrap_or_default();
+        out["warnings"] = serde_json::json!([]);
+        out["outputs"] = serde_json::json!({ "csv": a.out });
         out["pressure"] = serde_json::to_value(&s.pressure).unwrap_or_default();
         println!("{out}");
         return Ok(());
@@ -100,7 +102,7 @@ pub fn run(a: SimilarityArgs) -> slamtool::Result<()> {
         "  panels {}, kinematic residual {:.1e}",
         s.panels, s.residual
     );
-    if let Some(p) = &a.output {
+    if let Some(p) = &a.out {
         println!("  pressure distribution: {}", p.display());
     }
     Ok(())
@@ -142,7 +144,7 @@ fn table(a: &SimilarityArgs, prov: &Provenance) -> slamtool::Result<()> {
     .map(|s| s.to_string())
     .collect();
     let table: Vec<Vec<String>> = rows.iter().map(cell).collect();
-    if let Some(path) = &a.output {
+    if let Some(path) = &a.out {
         let text = slamtool::sph::output::csv_text(Some(prov), &header, &table)?;
         slamtool::files::write_text_atomic(path, &text)?;
     }
@@ -154,7 +156,10 @@ fn table(a: &SimilarityArgs, prov: &Provenance) -> slamtool::Result<()> {
                 Err(e) => serde_json::json!({"deadrise_deg": r.deadrise_deg, "error": e}),
             })
             .collect();
-        let out = serde_json::json!({"tool": TOOL, "provenance": prov, "table": list});
+        let out = serde_json::json!({
+            "tool": TOOL, "provenance": prov, "warnings": [], "outputs": { "csv": a.out },
+            "table": list,
+        });
         println!("{out}");
         return Ok(());
     }
