@@ -1,7 +1,7 @@
 //! Nonlinear similarity solution of a symmetric wedge entering calm water at constant speed
 //! (Dobrovol'skaya 1969, J. Fluid Mech. 36, 805-829; computed for 4-81 deg by Zhao & Faltinsen 1993,
 //! J. Fluid Mech. 246, 593-612; an integral-hodograph formulation in Semenov & Iafrati 2006, J. Fluid
-//! Mech. 555, 323-342). Incompressible, irrotational, no gravity, no air, no surface tension.
+//! Mech. 547, 231-256). Incompressible, irrotational, no gravity, no air, no surface tension.
 //!
 //! **Status.** The Newton iteration converges (kinematic residual below 1e-9) from 5 to 55 deg; at
 //! 60 deg it does not today, and [`solve`] then returns an error (never an unconverged value);
