@@ -33,6 +33,7 @@ const COMMANDS: &[&[&str]] = &[
     &["hull", "section"],
     &["hull", "generate"],
     &["sea", "info"],
+    &["similarity"],
     &["motions"],
     &["entry", "wedge"],
     &["entry", "section"],
@@ -227,6 +228,7 @@ fn json_results_share_the_common_fields() {
         &["hull", "info", HULL, "--json"][..],
         &["hull", "section", HULL, "--station", "0.1", "--json"],
         &["sea", "info", SEA, "--json"],
+        &["similarity", "--deadrise-deg", "30", "--json"],
         &["bench", "--steps", "1", "--particles", "1000", "--json"],
     ] {
         let o = slamtool(args);

@@ -22,6 +22,7 @@ mod motions;
 pub mod progress_bar;
 mod report;
 mod sea;
+mod similarity;
 pub mod station;
 mod sweep;
 mod validate;
@@ -64,6 +65,9 @@ enum Command {
     /// Sea states: regular waves, spectra, speeds.
     #[command(subcommand, after_long_help = sea::EXAMPLES)]
     Sea(sea::SeaCommand),
+    /// Nonlinear similarity solution of constant-speed wedge entry (Cp, peak, spray root, force).
+    #[command(after_long_help = similarity::EXAMPLES)]
+    Similarity(similarity::SimilarityArgs),
     /// The 2D+t assessment: strip theory, water entry of every slamming station, design pressures.
     #[command(after_long_help = assess::EXAMPLES)]
     Assess(assess::AssessArgs),
@@ -155,6 +159,7 @@ pub fn main() -> ExitCode {
         Command::Entry(c) => entry::run(c),
         Command::Bench(a) => bench::run(a),
         Command::Sea(c) => sea::run(c),
+        Command::Similarity(a) => similarity::run(a),
         Command::Assess(a) => assess::run(a),
         Command::Motions(a) => motions::run(a),
         Command::Validate(a) => validate::run(a),
