@@ -17,6 +17,7 @@ pub fn verdict_mark(v: &str) -> (Mark, &'static str) {
         "converged" => (Mark::Dot, "SPH, converged (GCI <= 5 %)"),
         "acceptable" => (Mark::Ring, "SPH, acceptable (GCI <= 20 %)"),
         "not_converged" => (Mark::Cross, "SPH, not converged"),
+        "mismatched" => (Mark::Triangle, "SPH, levels show different events"),
         _ => (Mark::Square, "SPH, convergence not assessed"),
     }
 }
@@ -41,8 +42,12 @@ fn sph_points(evs: &[&Value], name: &str, x: &dyn Fn(&Value) -> f64) -> Vec<Mark
         else {
             continue;
         };
+        // the slamming peak; a sensor whose impact SPH does not resolve has none and no marker
+        let Some(v) = num(q, "slamming_peak_pa") else {
+            continue;
+        };
         let (m, label) = verdict_mark(text(q, "convergence"));
-        let p = (x(e), num(q, "raw_peak_pa").unwrap_or(f64::NAN) * 1e-3);
+        let p = (x(e), v * 1e-3);
         match out.iter_mut().find(|(l, _, _)| l == label) {
             Some((_, _, v)) => v.push(p),
             None => out.push((label.to_string(), m, vec![p])),
@@ -56,8 +61,9 @@ pub fn design_space(r: &mut Report, saved: &Saved) {
     r.para(
         "Peak pressure per sensor against speed (the largest over the regular waves at each speed) and \
          along the girth. Lines with dots: the analytic estimate (modified Logvinovich, generalised Wagner \
-         wetting) of every emerging event; markers: SPH peaks after the contact transient, their shape the \
-         convergence verdict of the peak (legend). Colours are those of the sensors throughout the report.",
+         wetting) of every emerging event; markers: SPH slamming peaks (the largest value in each sensor's \
+         impact window; none where SPH does not resolve the impact), their shape the convergence verdict of \
+         the peak (legend). Colours are those of the sensors throughout the report.",
     );
     for st in saved.stations() {
         let f = num(st, "station").unwrap_or(f64::NAN);
@@ -268,14 +274,16 @@ pub fn appendix(r: &mut Report, saved: &Saved) {
                 n.clone(),
                 num(e, "entry_velocity_m_per_s").map_or("-".into(), |v| format!("{v:.3}")),
                 kpa(sensor_value(e, "analytic", &n, "peak_pa")),
+                kpa(sensor_value(e, "sph", &n, "slamming_peak_pa")),
                 kpa(sensor_value(e, "sph", &n, "raw_peak_pa")),
-                kpa(sensor_value(e, "sph", &n, "filtered_peak_pa")),
                 super::front::verdict(e, &n),
             ]);
         }
     }
     r.push(Block::Table {
-        caption: "Every event and sensor: analytic and SPH peaks (kPa) as plotted".into(),
+        caption: "Every event and sensor: analytic peak, SPH slamming peak (in the impact window, as \
+                  plotted) and the largest SPH value after the contact transient, whatever its phase (kPa)"
+            .into(),
         header: [
             "station",
             "speed m/s",
@@ -284,8 +292,8 @@ pub fn appendix(r: &mut Report, saved: &Saved) {
             "sensor",
             "v entry m/s",
             "analytic",
-            "SPH raw",
-            "SPH filt.",
+            "SPH slam.",
+            "SPH largest",
             "convergence",
         ]
         .map(String::from)
