@@ -57,10 +57,6 @@ const WATER: [RGBColor; 3] = [
 /// Colour of a flat keel.
 const FLAT: RGBColor = RGBColor(230, 120, 0);
 
-/// A flat keel at least this fraction of the section's largest half-breadth wide is marked (the rule of
-/// the assessment's air-cushion warning, [`crate::impact::air_cushion_warning`]).
-const FLAT_KEEL_FRACTION: f64 = 0.05;
-
 /// The body plan of `hull` as an SVG document; flat keels drawn thick in orange.
 pub fn body_plan_svg(hull: &Hull) -> Result<String> {
     register_font();
@@ -147,9 +143,9 @@ pub fn body_plan_svg(hull: &Hull) -> Result<String> {
             } else {
                 &[-1.0]
             };
+            // the assessment's own rule for a flat keel (its air-cushion warning)
             let flat = crate::impact::flat_keel_half_width(&st.section.points);
-            let flat_keel =
-                flat > 0.0 && flat >= FLAT_KEEL_FRACTION * st.section.max_half_breadth();
+            let flat_keel = crate::impact::air_cushion_warning(0.0, &st.section.points).is_some();
             any_flat |= flat_keel;
             for &s in sides {
                 let pts = st.section.points.iter().map(|p| (s * p[0], p[1]));
