@@ -109,8 +109,11 @@ fn record(key: &str, s: &RunSummary) -> SphRecord {
                     largest_phase: a.map(|a| a.largest_phase),
                     largest_hydrostatic_pa: a.and_then(|a| a.hydrostatic_at_largest),
                     gci: gci(&name),
-                    particles_across_wetted: a
-                        .and_then(|a| a.crossing_half_width_m.map(|c| c / s.dp_m)),
+                    particles_across_wetted: a.and_then(|a| {
+                        a.crossing_half_width_m
+                            .map(|c| c / q.stage.map_or(s.dp_m, |r| r.dp_m))
+                    }),
+                    stage_dp_m: q.stage.map(|r| r.dp_m),
                 }
             })
             .collect(),
@@ -181,7 +184,7 @@ fn sph_event(
         out_dir: Some(tmp.clone()),
         ..Default::default()
     };
-    let r = match sph::run_with_convergence(setup, &opts, study) {
+    let r = match sph::run_staged(setup, &opts, study) {
         Ok(r) => r,
         Err(err) => {
             let _ = std::fs::remove_dir_all(&tmp);

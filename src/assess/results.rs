@@ -61,9 +61,14 @@ pub struct SphSensor {
     /// GCI of the slamming peak (fraction), from the matched levels.
     #[serde(default)]
     pub gci: Option<f64>,
-    /// Particles across the analytic wetted half-width when the contact crosses the sensor.
+    /// Particles across the analytic wetted half-width when the contact crosses the sensor (at the
+    /// spacing of the run whose record the sensor has: the keel stage's when one resolved it).
     #[serde(default)]
     pub particles_across_wetted: Option<f64>,
+    /// The spacing (m) of the keel stage that resolved the sensor ([`crate::sph::keel_stage`]); `None`
+    /// when the record is the main run's.
+    #[serde(default)]
+    pub stage_dp_m: Option<f64>,
 }
 
 impl SphSensor {
@@ -334,6 +339,8 @@ pub struct DesignValue {
     pub rise_time_s: Option<f64>,
     /// Particles across the analytic wetted half-width when the contact crosses the sensor.
     pub particles_across_wetted: Option<f64>,
+    /// The spacing (m) of the keel stage the SPH value comes from, when a stage resolved the sensor.
+    pub stage_dp_m: Option<f64>,
     /// The largest SPH value of the governing event where it comes after the impact (immersion phase) and
     /// exceeds the design value ([`SphSensor::later_load`]).
     pub later_load: Option<f64>,
@@ -398,6 +405,7 @@ impl DesignValue {
             impulse: q.and_then(|q| q.slamming_impulse_pa_s),
             rise_time_s: q.and_then(|q| q.rise_time_s),
             particles_across_wetted: q.and_then(|q| q.particles_across_wetted),
+            stage_dp_m: q.and_then(|q| q.stage_dp_m),
             later_load: q.and_then(|q| q.later_load(d.value)),
             later_load_hydrostatic: q
                 .filter(|q| q.later_load(d.value).is_some())
@@ -740,6 +748,7 @@ mod tests {
             largest_hydrostatic_pa: None,
             gci: None,
             particles_across_wetted: Some(12.0),
+            stage_dp_m: None,
         }
     }
 

@@ -113,6 +113,11 @@ pub struct Common {
     /// Run even when the estimated wall time exceeds the one-hour bound.
     #[arg(long)]
     force: bool,
+    /// After the run, resolve the sensors it crossed too early (in the contact transient, or with fewer
+    /// than 10 particles across the wetted half-width) with fine runs of the section's lower part at 20
+    /// particles across, as `assess` does (keel stages, `slamtool::sph::keel_stage`).
+    #[arg(long)]
+    keel_stages: bool,
 }
 
 #[derive(Debug, Args)]
@@ -390,7 +395,11 @@ fn go(mut setup: sph::Setup, run: Run, name: &str) -> slamtool::Result<()> {
         png: c.frames > 0,
         provenance: Some(run.prov.clone()),
     };
-    let RunResult { summary, .. } = sph::run_with_convergence(setup, &opts, plan)?;
+    let RunResult { summary, .. } = if c.keel_stages {
+        sph::run_staged(setup, &opts, plan)?
+    } else {
+        sph::run_with_convergence(setup, &opts, plan)?
+    };
     let mut warnings = run.warnings;
     warnings.extend(summary.warnings.iter().cloned());
     if c.json.json {
@@ -450,9 +459,12 @@ fn go(mut setup: sph::Setup, run: Run, name: &str) -> slamtool::Result<()> {
             .map_or(String::new(), |sp| {
                 format!(" (integrated over {:.1} mm)", (sp[1] - sp[0]) * 1e3)
             });
+        let staged = s.stage.map_or(String::new(), |r| {
+            format!(" (keel stage {}, dp {:.3} mm)", r.stage, r.dp_m * 1e3)
+        });
         if s.summary.raw.value > 0.0 {
             println!(
-                "  sensor {:8} {:.1} kPa at {:.3} ms{span}",
+                "  sensor {:8} {:.1} kPa at {:.3} ms{span}{staged}",
                 s.name,
                 s.summary.raw.value * 1e-3,
                 s.summary.raw.time * 1e3
@@ -499,6 +511,21 @@ fn go(mut setup: sph::Setup, run: Run, name: &str) -> slamtool::Result<()> {
         for p in &conv.peaks {
             println!("  {}", p.statement);
         }
+    }
+    for (k, st) in summary.stages.iter().enumerate() {
+        println!(
+            "keel stage {k}      {}: section cut at half-breadth {:.1} mm, dp {:.3} mm, {} fluid particles, \
+             {} steps, {:.1} s{}",
+            st.sensors.join(", "),
+            st.cut_half_breadth_m * 1e3,
+            st.dp_m * 1e3,
+            st.fluid_particles,
+            st.steps,
+            st.wall_time_s,
+            st.left_out
+                .as_ref()
+                .map_or(String::new(), |w| format!("; not used: {w}"))
+        );
     }
     for w in &warnings {
         println!("{}", global::warning_line(w));

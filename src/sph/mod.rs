@@ -19,6 +19,7 @@ pub mod diffusion;
 pub mod eos;
 pub mod frame;
 pub mod integrator;
+pub mod keel_stage;
 pub mod kernel;
 pub mod kernel_correction;
 pub mod neighbours;
@@ -49,6 +50,7 @@ use crate::loads::peaks::{Summary, summarise_after};
 
 pub use case::{Level, MotionSpec, Overrides, SensorMethod, Setup, TankLayout};
 pub use counters::Counters;
+pub use keel_stage::run_staged;
 pub use sensors::{History, SensorSpec};
 pub use solver::Simulation;
 pub use study::{ConvergenceReport, StudyPlan, run_with_convergence};
@@ -85,6 +87,9 @@ pub struct NamedSummary {
     /// The record's phases and its slamming peak ([`crate::loads::anatomy`]), for a section run.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub anatomy: Option<crate::loads::anatomy::Anatomy>,
+    /// The keel stage whose record this is, when one resolved the sensor ([`keel_stage`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stage: Option<keel_stage::StageRef>,
 }
 
 /// The result of a run, written as `summary.json` and printed by `--json`.
@@ -130,6 +135,9 @@ pub struct RunSummary {
     pub warnings: Vec<String>,
     /// The convergence statement of every peak, when the run was part of a study ([`study`]).
     pub convergence: Option<ConvergenceReport>,
+    /// The keel stages run for the sensors this run crossed too early to resolve ([`keel_stage`]).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub stages: Vec<keel_stage::StageRecord>,
     pub counters: Counters,
     pub setup: Setup,
     /// Where the run came from (tool, commit, inputs, settings), when the caller gave it.
@@ -269,6 +277,7 @@ fn summarise_run(sim: &Simulation, wall_s: f64, stopped: Option<String>) -> Resu
         integration_span_m: None,
         summary: summarise_after(&h.t, &h.fz, fc, t_tr)?,
         anatomy: phases.as_ref().map(|p| p.force()),
+        stage: None,
     };
     let mut sensors = Vec::new();
     let spans = sim.sensors().spans();
@@ -284,6 +293,7 @@ fn summarise_run(sim: &Simulation, wall_s: f64, stopped: Option<String>) -> Resu
                 .as_ref()
                 .zip(span)
                 .map(|(p, span)| p.sensor(span, col)),
+            stage: None,
         });
     }
     let k_tr = h.t.partition_point(|&t| t < t_tr);
@@ -339,6 +349,7 @@ fn summarise_run(sim: &Simulation, wall_s: f64, stopped: Option<String>) -> Resu
         wagner_peak_pressure_pa: wp,
         warnings,
         convergence: None,
+        stages: Vec::new(),
         counters: sim.counters.clone(),
         setup: s.clone(),
         provenance: None,

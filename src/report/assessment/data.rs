@@ -36,6 +36,9 @@ pub struct Run {
     pub summary: Value,
     /// Columns of history.csv by name.
     pub columns: Vec<(String, Vec<f64>)>,
+    /// Columns of each keel stage's history.csv (`stage_<k>/`), by stage index
+    /// ([`crate::sph::keel_stage`]); empty where a stage's folder is missing.
+    pub stages: Vec<Vec<(String, Vec<f64>)>>,
     pub peak_png: Option<Vec<u8>>,
 }
 
@@ -45,6 +48,26 @@ impl Run {
             .iter()
             .find(|(n, _)| n == name)
             .map(|(_, c)| c.as_slice())
+    }
+
+    /// The time and values of column `col` of the record a sensor's values come from: the keel
+    /// stage's when one resolved the sensor (its index in the run summary), else the run's own.
+    pub fn record_of(&self, sensor: &str, col: &str) -> Option<(&[f64], &[f64])> {
+        let stage = self.summary["sensors"]
+            .as_array()?
+            .iter()
+            .find(|q| q["name"].as_str() == Some(sensor))
+            .and_then(|q| q["stage"]["stage"].as_u64());
+        let cols = match stage {
+            Some(k) => self.stages.get(k as usize)?,
+            None => &self.columns,
+        };
+        let find = |name: &str| {
+            cols.iter()
+                .find(|(n, _)| n == name)
+                .map(|(_, c)| c.as_slice())
+        };
+        Some((find("time_s")?, find(col)?))
     }
 }
 
@@ -148,10 +171,17 @@ fn load_run(dir: &Path) -> Result<Run> {
     let summary = read_json(&dir.join("summary.json"))?;
     let columns = read_history(&dir.join("history.csv"))?;
     let peak_png = std::fs::read(dir.join(crate::sph::peak_snapshot::FILE)).ok();
+    let n_stages = summary["stages"].as_array().map_or(0, Vec::len);
+    let stages = (0..n_stages)
+        .map(|k| {
+            read_history(&dir.join(format!("stage_{k}")).join("history.csv")).unwrap_or_default()
+        })
+        .collect();
     Ok(Run {
         folder: dir.to_path_buf(),
         summary,
         columns,
+        stages,
         peak_png,
     })
 }

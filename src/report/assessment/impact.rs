@@ -108,9 +108,18 @@ fn series_of(run: &Run, col: &str, scale: f64) -> Vec<(f64, f64)> {
     }
 }
 
-fn filtered(run: &Run, col: &str, cutoff_hz: f64) -> Option<Vec<(f64, f64)>> {
-    let t = run.column("time_s")?;
-    let x = run.column(col)?;
+/// The record of sensor `name` (column `col`), from the keel stage that resolved it where one did.
+fn sensor_series(run: &Run, name: &str, col: &str, scale: f64) -> Vec<(f64, f64)> {
+    run.record_of(name, col).map_or_else(Vec::new, |(t, x)| {
+        t.iter()
+            .zip(x)
+            .map(|(&t, &x)| (t * 1e3, x * scale))
+            .collect()
+    })
+}
+
+fn filtered(run: &Run, name: &str, col: &str, cutoff_hz: f64) -> Option<Vec<(f64, f64)>> {
+    let (t, x) = run.record_of(name, col)?;
     if t.len() < 3 {
         return None;
     }
@@ -233,12 +242,18 @@ pub fn section(r: &mut Report, saved: &Saved) {
             let col = format!("{n}_pa");
             fig.series.push(Series::new(
                 format!("{n} raw"),
-                series_of(run, &col, 1e-3),
+                sensor_series(run, n, &col, 1e-3),
                 k,
                 Mark::ThinLine,
             ));
-            if let Some(fc) = cutoff
-                && let Some(pts) = filtered(run, &col, fc)
+            // a sensor resolved by a keel stage is filtered at the stage's own cut-off
+            let stage_cutoff = list(&run.summary, "sensors")
+                .iter()
+                .find(|q| text(q, "name") == n.as_str())
+                .and_then(|q| q["stage"]["stage"].as_u64())
+                .map(|k| run.summary["stages"][k as usize]["filter_cutoff_hz"].as_f64());
+            if let Some(fc) = stage_cutoff.unwrap_or(cutoff)
+                && let Some(pts) = filtered(run, n, &col, fc)
             {
                 fig.series
                     .push(Series::new(format!("{n} filtered"), pts, k, Mark::Line));
@@ -267,6 +282,31 @@ pub fn section(r: &mut Report, saved: &Saved) {
              contact crossing it); a sensor without a dot has no SPH impact (see the sign-off page)."
         } else {
             ""
+        };
+        let staged: Vec<String> = list(&run.summary, "stages")
+            .iter()
+            .filter(|st| st["left_out"].is_null())
+            .map(|st| {
+                format!(
+                    "{} from a keel stage (the section cut at half-breadth {:.1} mm, dp {:.3} mm, run to {:.2} ms)",
+                    list(st, "sensors")
+                        .iter()
+                        .filter_map(|x| x.as_str())
+                        .collect::<Vec<_>>()
+                        .join(", "),
+                    num(st, "cut_half_breadth_m").unwrap_or(f64::NAN) * 1e3,
+                    num(st, "dp_m").unwrap_or(f64::NAN) * 1e3,
+                    num(st, "t_end_s").unwrap_or(f64::NAN) * 1e3
+                )
+            })
+            .collect();
+        let dots = if staged.is_empty() {
+            dots.to_string()
+        } else {
+            format!(
+                "{dots} Records of sensors the main run crossed too early to resolve: {}.",
+                staged.join("; ")
+            )
         };
         let t_tr = run.summary["contact_transient_end_s"].as_f64();
         let transient = mark_transient(&mut fig, t_tr);

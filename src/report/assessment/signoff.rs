@@ -106,6 +106,7 @@ pub fn page(r: &mut Report, saved: &Saved) {
                 fmt(num(d, "rise_time_s"), 1e3, 2),
                 fmt(num(d, "impulse"), 1.0, 2),
                 fmt(num(d, "particles_across_wetted"), 1.0, 1),
+                fmt(num(d, "stage_dp_m"), 1e3, 2),
                 fmt(num(d, "acoustic_bound").filter(|&b| b > 0.0), 1e-3, 0),
             ]);
             let fl = flags(d);
@@ -134,7 +135,8 @@ pub fn page(r: &mut Report, saved: &Saved) {
     r.push(Block::Table {
         caption: "The governing impact of each panel: SPH impact status, slamming peak time, rise time, \
                   impulse over the impact window, particles across the analytic wetted half-width when \
-                  the contact crosses the panel, and the water-hammer bound rho c_w V of a flat keel \
+                  the contact crosses the panel (at the spacing of the keel stage that resolved it, where one did: \
+                  a fine run of the section's lower part, see the SPH notes), and the water-hammer bound rho c_w V of a flat keel \
                   (an upper bound without air)"
             .into(),
         header: [
@@ -144,6 +146,7 @@ pub fn page(r: &mut Report, saved: &Saved) {
             "rise ms",
             "impulse Pa s",
             "particles across",
+            "keel stage dp mm",
             "water hammer kPa",
         ]
         .map(String::from)
