@@ -214,25 +214,28 @@ pub struct Row {
     pub velocities_m_per_s: Vec<Option<f64>>,
 }
 
-/// The variants of the definitions table (the draft labels give the drafts of the loading `base`; applied
+/// The variants of the definitions table, each definition alone on the reference row (lambda = Lpp) and
+/// then together (the draft labels give the drafts of the loading `base`; applied
 /// to another loading, a draft reading uses that loading's mean draft and trim): each definition alone, then the options, then the stated definitions of
 /// Veen (2010) eq. 6.1-6.2 together. The first row is the reference the differences are taken from:
 /// lambda = Lpp, the wave of the bundled Ochi sea state before issue 29.
 pub fn standard_variants(base: &LoadingCondition) -> Vec<(String, Variant)> {
-    let d = Variant::default;
+    // each definition alone is changed on the reference chain (lambda = Lpp); the stated-definitions rows
+    // take the sea file's wave
+    let d = || Variant {
+        lambda_over_l: Some(1.0),
+        ..Variant::default()
+    };
     let veen = Variant {
         velocity: VelocityDefinition::ShipFixedStation,
-        ..d()
+        ..Variant::default()
     };
     vec![
         (
             "reference: λ = Lpp, loading as in the hull file, Ds/Dt (bundled before issue 29)".into(),
-            Variant {
-                lambda_over_l: Some(1.0),
-                ..d()
-            },
+            d(),
         ),
-        ("wave as in the sea file".into(), d()),
+        ("wave as in the sea file".into(), Variant::default()),
         (
             format!(
                 "mean draft read as the draft at the FP (FP {:.3} m, AP {:.3} m)",
@@ -273,7 +276,7 @@ pub fn standard_variants(base: &LoadingCondition) -> Vec<(String, Variant)> {
             },
         ),
         (
-            "keel entry against the incident wave only, no swell-up (the bundled chain already)".into(),
+            "keel entry against the incident wave only, no swell-up (what the chain already does)".into(),
             d(),
         ),
         (
@@ -396,7 +399,7 @@ pub fn markdown(targets: &[Target], rows: &[Row], published: Option<&Published>)
                 let p = published.and_then(|p| p.values.get(k).copied().flatten());
                 let closed = match (v, base, p) {
                     (Some(v), Some(b), Some(p)) if (p - b).abs() > 1e-12 => {
-                        format!("{:+.0} %", 100.0 * (v - b) / (p - b))
+                        format!("{:+.0} %", 100.0 * (v - b) / (p - b) + 0.0)
                     }
                     _ => "-".into(),
                 };
