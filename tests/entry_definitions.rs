@@ -150,7 +150,10 @@ fn ochi_keel_entry_by_definition() {
         &entry_definitions::standard_variants(loading),
     )
     .unwrap();
-    assert_eq!(rows.len(), entry_definitions::standard_variants(loading).len());
+    assert_eq!(
+        rows.len(),
+        entry_definitions::standard_variants(loading).len()
+    );
     let md = entry_definitions::markdown(&[target(0.093), target(0.174)], &rows, None);
     assert_eq!(md.lines().count(), rows.len() + 2, "{md}");
 }
@@ -171,8 +174,7 @@ fn hermundstad_readings_state_the_needed_relative_motion() {
             period_s: 1.9,
         },
     ];
-    let rows =
-        wave_readings::readings(&hull, loading, 0.05, 0.3, 2.2, &readings, 1.4).unwrap();
+    let rows = wave_readings::readings(&hull, loading, 0.05, 0.3, 2.2, &readings, 1.4).unwrap();
     // linear: the same RAO under both readings, twice the relative motion for twice the amplitude
     assert!((rows[0].relative_motion_rao - rows[1].relative_motion_rao).abs() < 1e-9);
     assert!(

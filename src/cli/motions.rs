@@ -343,26 +343,27 @@ fn entry_definitions(
         }
     }
     let rows = defs::table(&targets, &defs::standard_variants(loading))?;
-    let published = match slamtool::assess::comparisons::reference_kind(&hull.name, &sea.name)?
-        .as_deref()
-    {
-        Some("ochi1958") => {
-            let veen = slamtool::assess::comparisons::veen_ochi_entry_speeds()?;
-            let values: Vec<Option<f64>> = targets
-                .iter()
-                .map(|t| {
-                    veen.iter()
-                        .find(|(f, u, _)| (f - t.aft_of_fp).abs() < 1e-6 && (u - t.speed).abs() < 1e-6)
-                        .map(|v| v.2)
+    let published =
+        match slamtool::assess::comparisons::reference_kind(&hull.name, &sea.name)?.as_deref() {
+            Some("ochi1958") => {
+                let veen = slamtool::assess::comparisons::veen_ochi_entry_speeds()?;
+                let values: Vec<Option<f64>> = targets
+                    .iter()
+                    .map(|t| {
+                        veen.iter()
+                            .find(|(f, u, _)| {
+                                (f - t.aft_of_fp).abs() < 1e-6 && (u - t.speed).abs() < 1e-6
+                            })
+                            .map(|v| v.2)
+                    })
+                    .collect();
+                values.iter().any(Option::is_some).then(|| Published {
+                    label: "Veen (2010), SEAWAY strip theory (reference)".into(),
+                    values,
                 })
-                .collect();
-            values.iter().any(Option::is_some).then(|| Published {
-                label: "Veen (2010), SEAWAY strip theory (reference)".into(),
-                values,
-            })
-        }
-        _ => None,
-    };
+            }
+            _ => None,
+        };
     println!(
         "Keel-entry velocity (m/s, downward) of {} at loading '{}' in wave {} (H {} m, T {:.3} s, \
          lambda {:.3} m) of {}, under each definition of the strip-theory chain ({} strips, Frank close-fit; \

@@ -102,9 +102,7 @@ pub fn at_station_as(r: &Response, x: f64, def: &Definition) -> Result<RelativeM
         VelocityDefinition::EarthFixedPlane => {
             ship_frame + r.pitch * r.speed + C64::new(0.0, k * r.speed) * zeta
         }
-        VelocityDefinition::WithoutPitchSpeedTerm => {
-            ship_frame + C64::new(0.0, k * r.speed) * zeta
-        }
+        VelocityDefinition::WithoutPitchSpeedTerm => ship_frame + C64::new(0.0, k * r.speed) * zeta,
         VelocityDefinition::ShipFixedStation => ship_frame,
     };
     Ok(RelativeMotion {

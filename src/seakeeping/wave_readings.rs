@@ -120,7 +120,8 @@ pub fn readings(
 /// The rows as a Markdown table, with the measured velocity and delay of flare impact after keel entry
 /// in the last row.
 pub fn markdown(rows: &[ReadingRow], measured_m_per_s: f64, measured_delay_s: f64) -> String {
-    let opt = |v: Option<f64>, p: usize| v.map_or("not reached".to_string(), |v| format!("{v:.p$}"));
+    let opt =
+        |v: Option<f64>, p: usize| v.map_or("not reached".to_string(), |v| format!("{v:.p$}"));
     let mut out = "| reading | ζ_a (m) | T (s) | ω_e (rad/s) | local draft (m) | \\|s_a\\| (m) | \\|s_a\\|/ζ_a | \
                    \\|Ds/Dt\\| (m/s) | \\|s_a\\| ω_e (m/s) | keel entry (m/s) | flare impact (m/s) | flare after keel (s) | \
                    \\|s_a\\| needed (m) | \\|s_a\\|/ζ_a needed | needed / computed |\n\

@@ -31,9 +31,9 @@ pub fn panel_lower_edge(hull: &Hull, name: &str) -> Result<(f64, f64)> {
 
 /// The first regular wave of a sea state.
 fn first_wave(sea: &SeaState) -> Result<&crate::sea::RegularWave> {
-    sea.regular.first().ok_or_else(|| {
-        Error::Invalid(format!("{}: no regular wave", sea.source.display()))
-    })
+    sea.regular
+        .first()
+        .ok_or_else(|| Error::Invalid(format!("{}: no regular wave", sea.source.display())))
 }
 
 /// Ochi's keel-entry velocities at P1 and P3 at Veen's speed under each definition, and Hermundstad's
@@ -54,7 +54,10 @@ pub fn ochi_entry_velocities(case: &Case) -> Result<Outcome> {
     let wave = first_wave(&sea)?;
     let hm_wave = first_wave(&hm_sea)?;
     let mut targets = Vec::new();
-    for (key, label) in [("p1_station_aft_of_fp", "P1"), ("p3_station_aft_of_fp", "P3")] {
+    for (key, label) in [
+        ("p1_station_aft_of_fp", "P1"),
+        ("p3_station_aft_of_fp", "P3"),
+    ] {
         let f = num(key)?;
         targets.push(Target {
             label: format!("Ochi {label} {f} Lpp keel entry"),
@@ -67,22 +70,20 @@ pub fn ochi_entry_velocities(case: &Case) -> Result<Outcome> {
             fixed_wave: false,
         });
     }
-    targets.push(
-        Target {
-            label: format!(
-                "H&M {hm_station:.3} Lpp flare impact ({} m/s, {})",
-                toml_number(&hm, &["model", "model_speed_m_s"])?,
-                hm_wave.name
-            ),
-            hull: &hm_hull,
-            loading: hm_loading,
-            wave: hm_wave,
-            speed: toml_number(&hm, &["model", "model_speed_m_s"])?,
-            aft_of_fp: hm_station,
-            height_above_keel: hm_h,
-            fixed_wave: true,
-        },
-    );
+    targets.push(Target {
+        label: format!(
+            "H&M {hm_station:.3} Lpp flare impact ({} m/s, {})",
+            toml_number(&hm, &["model", "model_speed_m_s"])?,
+            hm_wave.name
+        ),
+        hull: &hm_hull,
+        loading: hm_loading,
+        wave: hm_wave,
+        speed: toml_number(&hm, &["model", "model_speed_m_s"])?,
+        aft_of_fp: hm_station,
+        height_above_keel: hm_h,
+        fixed_wave: true,
+    });
     let variants = entry_definitions::standard_variants(loading);
     let rows = entry_definitions::table(&targets, &variants)?;
     let published = Published {
@@ -126,9 +127,12 @@ pub fn ochi_entry_velocities(case: &Case) -> Result<Outcome> {
             .map(|v| v.map_or("-".into(), |v| format!("{v}"))),
     );
     table_rows.push(last);
-    let mut out = Outcome::new(computed, Reference::Value {
-        value: num("p3_entry_speed_m_s")?,
-    });
+    let mut out = Outcome::new(
+        computed,
+        Reference::Value {
+            value: num("p3_entry_speed_m_s")?,
+        },
+    );
     out.table = Some(Table {
         header,
         rows: table_rows,
@@ -168,7 +172,10 @@ pub fn hermundstad_readings(case: &Case) -> Result<(String, Vec<ReadingRow>)> {
     let t_full = toml_number(&fs, &["full_scale", "wave_period_s"])?;
     let (h_fs, t_fs) = (h_full / scale, t_full / scale.sqrt());
     let v_ref = toml_number(&r, &["reported_comparisons", "flare_impact_speed_m_s"])?;
-    let delay = toml_number(&r, &["reported_comparisons", "flare_impact_delay_after_keel_s"])?;
+    let delay = toml_number(
+        &r,
+        &["reported_comparisons", "flare_impact_delay_after_keel_s"],
+    )?;
     let speed = toml_number(&r, &["model", "model_speed_m_s"])?;
     let readings = [
         Reading {
@@ -194,7 +201,11 @@ pub fn hermundstad_readings(case: &Case) -> Result<(String, Vec<ReadingRow>)> {
     let best = rows
         .iter()
         .min_by(|a, b| {
-            let d = |r: &ReadingRow| (r.needed_amplitude_m / r.relative_motion_amplitude_m).ln().abs();
+            let d = |r: &ReadingRow| {
+                (r.needed_amplitude_m / r.relative_motion_amplitude_m)
+                    .ln()
+                    .abs()
+            };
             d(a).total_cmp(&d(b))
         })
         .ok_or_else(|| Error::Invalid("no wave readings".into()))?;
