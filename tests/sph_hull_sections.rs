@@ -108,6 +108,7 @@ fn ochi_stations_complete_under_the_regular_wave_entry_profile() {
         irregular: vec![],
         stations,
         swell_up: 1.0,
+        keel_slope_term: false,
         slam_probability_limit: 0.03,
         method: SectionMethod::FrankCloseFit,
         spectrum_samples: 3,
@@ -124,7 +125,7 @@ fn ochi_stations_complete_under_the_regular_wave_entry_profile() {
         let section = impact::entry_section(&h, st.x).unwrap();
         runs_to_the_end(
             &format!(
-                "ochi-vform {:.3} Lpp, H 0.2 m lambda = L, 2.0 m/s",
+                "ochi-vform {:.3} Lpp, H 0.2 m T 2.0 s, 2.0 m/s",
                 st.aft_of_fp
             ),
             &section,

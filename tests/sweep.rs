@@ -321,7 +321,7 @@ fn bad_ranges_and_invalid_hull_variants_are_located_in_the_sweep_file() {
     assert!(m.contains("fin_scale"), "{m}");
     let (l, _, m) = located_error("[grid]\nwave = [\"no-such-wave\"]\n");
     assert_eq!(l, 12, "{m}");
-    assert!(m.contains("H0.20-L6.0"), "{m}");
+    assert!(m.contains("H0.20-T2.0"), "{m}");
 }
 
 #[test]

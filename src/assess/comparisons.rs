@@ -363,3 +363,26 @@ fn hermundstad(hull: &Hull, plan: &Plan, a: &Assessment) -> Result<Validation> {
 fn plan_rho(hull: &Hull, plan: &Plan) -> f64 {
     hull.loading(Some(&plan.loading)).map_or(1000.0, |l| l.rho)
 }
+
+/// The kind of reference case (`data/reference/validation.toml`) a hull and sea state match, if any:
+/// "hermundstad2005", "ochi1958", ...
+pub fn reference_kind(hull_name: &str, sea_name: &str) -> Result<Option<String>> {
+    let index: Index = toml::from_str(INDEX)
+        .map_err(|e| Error::Invalid(format!("data/reference/validation.toml: {e}")))?;
+    Ok(index
+        .case
+        .into_iter()
+        .find(|c| c.hull_name == hull_name && c.sea_name == sea_name)
+        .map(|c| c.kind))
+}
+
+/// Veen's (2010) SEAWAY keel-entry speeds for Ochi's V-form (`veen2010_sph` of ochi1958_vform.toml) as
+/// (station as a fraction of Lpp aft of the FP, speed m/s, entry speed m/s).
+pub fn veen_ochi_entry_speeds() -> Result<Vec<(f64, f64, f64)>> {
+    let num = |k: &str| reference_number(OCHI, "veen2010_sph", k);
+    let u = num("entry_speed_speed_m_s")?;
+    Ok(vec![
+        (num("p1_station_aft_of_fp")?, u, num("p1_entry_speed_m_s")?),
+        (num("p3_station_aft_of_fp")?, u, num("p3_entry_speed_m_s")?),
+    ])
+}

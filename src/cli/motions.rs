@@ -46,8 +46,11 @@ pub struct MotionsArgs {
     #[arg(long)]
     loading: Option<String>,
     /// Speeds as Froude numbers, comma-separated (replaces the sea file's speeds).
-    #[arg(long = "fn", value_delimiter = ',')]
+    #[arg(long = "fn", value_delimiter = ',', conflicts_with = "speed")]
     froude: Vec<f64>,
+    /// Speeds in m/s, comma-separated (replaces the sea file's speeds).
+    #[arg(long, value_delimiter = ',', value_name = "U")]
+    speed: Vec<f64>,
     /// Wavelength ratios lambda/Lpp for the RAO table, comma-separated.
     #[arg(
         long,
@@ -80,9 +83,20 @@ pub struct MotionsArgs {
     /// Number of strips (sections) along the hull for strip theory.
     #[arg(long, default_value_t = 31, alias = "stations", value_name = "N")]
     strips: usize,
-    /// Dynamic swell-up factor on relative motion and velocity (1 = none).
+    /// Dynamic swell-up factor on relative motion and velocity (1 = none), a constant: no dynamic
+    /// swell-up formulation (e.g. Tasaki 1963) is in the project.
     #[arg(long, default_value_t = 1.0)]
     swell_up: f64,
+    /// Add the keel-slope term U dz_k/dx to the keel-entry velocities: the sinking, in an earth-fixed
+    /// transverse plane, of a keel that is not parallel to the calm waterline (keel rise or trim).
+    #[arg(long)]
+    keel_slope_term: bool,
+    /// Instead of the motion tables, print (Markdown) the keel-entry velocity at each station and speed in
+    /// the first regular wave under each alternative definition of the chain (wave, drafts, heave of G,
+    /// velocity definition, k_yy, swell-up, keel slope), with Veen's (2010) values where the hull and sea
+    /// are his Ochi case.
+    #[arg(long)]
+    entry_definitions: bool,
     /// Operability limit on the slam probability per encounter.
     #[arg(long, default_value_t = DEFAULT_SLAM_PROBABILITY_LIMIT)]
     slam_limit: f64,
@@ -167,7 +181,14 @@ pub fn run(a: MotionsArgs) -> Result<()> {
         ));
     }
     let model = ShipModel::from_hull(&hull, loading, a.strips)?;
-    let speeds = if a.froude.is_empty() {
+    for &v in &a.speed {
+        if !(v.is_finite() && v >= 0.0) {
+            return Err(bad("--speed values", "finite and >= 0 m/s", v));
+        }
+    }
+    let speeds = if !a.speed.is_empty() {
+        a.speed.clone()
+    } else if a.froude.is_empty() {
         sea.speeds.resolve(hull.lpp)
     } else {
         a.froude
@@ -215,6 +236,9 @@ pub fn run(a: MotionsArgs) -> Result<()> {
                 .map_err(|e| Error::Invalid(format!("{}: {e}", st.given)))?,
         );
     }
+    if a.entry_definitions {
+        return entry_definitions(&hull, loading, &sea, &at, &speeds);
+    }
     let method = match a.method {
         Method::CloseFit => SectionMethod::FrankCloseFit,
         Method::Lewis => SectionMethod::Lewis,
@@ -222,6 +246,7 @@ pub fn run(a: MotionsArgs) -> Result<()> {
     let req = Request {
         lambda_over_l: a.lambda_over_l.clone(),
         swell_up: a.swell_up,
+        keel_slope_term: a.keel_slope_term,
         slam_probability_limit: a.slam_limit,
         method,
         spectrum_samples: a.spectrum_samples.max(3),
@@ -239,7 +264,7 @@ pub fn run(a: MotionsArgs) -> Result<()> {
     warnings.extend(report.warnings.iter().cloned());
     let settings = serde_json::json!({
         "loading": loading.name, "method": method.name(), "strips": a.strips,
-        "swell_up": a.swell_up, "slam_limit": a.slam_limit, "lambda_over_l": a.lambda_over_l,
+        "swell_up": a.swell_up, "keel_slope_term": a.keel_slope_term, "slam_limit": a.slam_limit, "lambda_over_l": a.lambda_over_l,
         "speeds_m_per_s": req.speeds, "stations": at, "spectrum_samples": req.spectrum_samples,
         "frequency_spacing": a.frequency_spacing,
     });
@@ -283,5 +308,81 @@ pub fn run(a: MotionsArgs) -> Result<()> {
             None => println!("\nno files written (give -o DIR for the CSV plot data)"),
         }
     }
+    Ok(())
+}
+
+/// `--entry-definitions`: the definitions table (Markdown) at every station and speed in the first regular
+/// wave of the sea file.
+fn entry_definitions(
+    hull: &Hull,
+    loading: &slamtool::hull::LoadingCondition,
+    sea: &SeaState,
+    at: &[f64],
+    speeds: &[f64],
+) -> Result<()> {
+    use slamtool::seakeeping::entry_definitions::{self as defs, Published, Target};
+    let wave = sea.regular.first().ok_or_else(|| {
+        Error::Invalid(format!(
+            "{}: --entry-definitions needs a regular wave in the sea file",
+            sea.source.display()
+        ))
+    })?;
+    let mut targets = Vec::new();
+    for &u in speeds {
+        for &f in at {
+            targets.push(Target {
+                label: format!("{f} Lpp, {u} m/s"),
+                hull,
+                loading,
+                wave,
+                speed: u,
+                aft_of_fp: f,
+                height_above_keel: 0.0,
+                fixed_wave: false,
+            });
+        }
+    }
+    let rows = defs::table(&targets, &defs::standard_variants(loading))?;
+    let published =
+        match slamtool::assess::comparisons::reference_kind(&hull.name, &sea.name)?.as_deref() {
+            Some("ochi1958") => {
+                let veen = slamtool::assess::comparisons::veen_ochi_entry_speeds()?;
+                let values: Vec<Option<f64>> = targets
+                    .iter()
+                    .map(|t| {
+                        veen.iter()
+                            .find(|(f, u, _)| {
+                                (f - t.aft_of_fp).abs() < 1e-6 && (u - t.speed).abs() < 1e-6
+                            })
+                            .map(|v| v.2)
+                    })
+                    .collect();
+                values.iter().any(Option::is_some).then(|| Published {
+                    label: "Veen (2010), SEAWAY strip theory (reference)".into(),
+                    values,
+                })
+            }
+            _ => None,
+        };
+    println!(
+        "Keel-entry velocity (m/s, downward) of {} at loading '{}' in wave {} (H {} m, T {:.3} s, \
+         lambda {:.3} m) of {}, under each definition of the strip-theory chain ({} strips, Frank close-fit; \
+         'change' from the first row{}). Generated by slamtool {}.\n",
+        hull.name,
+        loading.name,
+        wave.name,
+        wave.height_m,
+        wave.period_s,
+        wave.wavelength_m,
+        sea.name,
+        defs::STRIPS,
+        if published.is_some() {
+            "; 'gap closed': the change as a share of the gap from the first row to the published value"
+        } else {
+            ""
+        },
+        env!("CARGO_PKG_VERSION"),
+    );
+    print!("{}", defs::markdown(&targets, &rows, published.as_ref()));
     Ok(())
 }

@@ -50,12 +50,9 @@ pub fn seakeeping_station(
         )));
     }
     let h = HalfSection::new(pts)?;
-    Ok(Station::new(
-        hull.lpp,
-        aft_of_fp,
-        &h,
-        sec.deck_z() - sec.keel_z(),
-    ))
+    let mut st = Station::new(hull.lpp, aft_of_fp, &h, sec.deck_z() - sec.keel_z());
+    st.keel_slope = crate::seakeeping::entry_definitions::keel_slope(hull, loading, x)?;
+    Ok(st)
 }
 
 /// The stations that carry sensors in the hull file, as fractions of Lpp aft of the FP (sorted, without

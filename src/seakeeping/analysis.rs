@@ -27,6 +27,11 @@ pub struct Station {
     /// Keel-to-deck height of the section (m): the entry profile stops at this depth.
     #[serde(rename = "height_m")]
     pub height: f64,
+    /// Slope dz_k/dx of the keel above the local calm waterline (x forward; positive for a keel rising
+    /// towards the bow or trim by the stern), for the keel-slope term U dz_k/dx of the entry velocity
+    /// ([`super::entry_definitions`]); 0 unless set.
+    #[serde(rename = "keel_slope")]
+    pub keel_slope: f64,
 }
 
 impl Station {
@@ -37,6 +42,7 @@ impl Station {
             x: 0.5 * lpp - aft_of_fp * lpp,
             draft: wetted.draft(),
             height,
+            keel_slope: 0.0,
         }
     }
 }
@@ -50,6 +56,9 @@ pub struct Request {
     pub irregular: Vec<IrregularSea>,
     pub stations: Vec<Station>,
     pub swell_up: f64,
+    /// Add the keel-slope term U dz_k/dx (each station's `keel_slope`) to the downward velocity of the
+    /// keel-entry profiles ([`RegularStation::add_steady_velocity`]); off by default.
+    pub keel_slope_term: bool,
     pub slam_probability_limit: f64,
     pub method: SectionMethod,
     /// Samples per spectrum for the irregular-sea statistics.
@@ -79,6 +88,7 @@ impl Request {
             irregular: sea.irregular.clone(),
             stations,
             swell_up: 1.0,
+            keel_slope_term: false,
             slam_probability_limit: slamming::DEFAULT_SLAM_PROBABILITY_LIMIT,
             method: SectionMethod::FrankCloseFit,
             spectrum_samples: 30,
@@ -150,6 +160,18 @@ impl RegularStation {
                 profile_samples,
             ),
             relative_motion: rm,
+        }
+    }
+
+    /// Add a steady downward velocity `v` (m/s; the keel-slope term U dz_k/dx) to the keel-entry velocity
+    /// and its profile. The instant of entry and the end of the profile stay those of the oscillating
+    /// part (the steady sinking of the section in the earth-fixed plane is not added to the penetration).
+    pub fn add_steady_velocity(&mut self, v: f64) {
+        if let Some(k) = self.keel_entry.as_mut() {
+            k.entry_velocity += v;
+            for p in &mut k.samples {
+                p.velocity += v;
+            }
         }
     }
 }
@@ -302,13 +324,11 @@ pub fn run(model: &ShipModel, req: &Request) -> Result<Report> {
             let mut st = Vec::new();
             for s in &req.stations {
                 let rm = relative_motion::at_station(&r, s.x, req.swell_up)?;
-                st.push(RegularStation::new(
-                    s,
-                    rm,
-                    r.omega_e,
-                    za,
-                    req.profile_samples,
-                ));
+                let mut station = RegularStation::new(s, rm, r.omega_e, za, req.profile_samples);
+                if req.keel_slope_term {
+                    station.add_steady_velocity(u * s.keel_slope);
+                }
+                st.push(station);
             }
             regular.push(RegularResult {
                 wave: w.name.clone(),

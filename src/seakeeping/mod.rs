@@ -9,6 +9,7 @@
 //! frame); [`ShipModel::from_hull`] builds one from a `hull::Hull` and a loading condition.
 
 pub mod analysis;
+pub mod entry_definitions;
 mod from_hull;
 pub mod rao;
 pub mod relative_motion;
@@ -16,6 +17,7 @@ pub mod section;
 pub mod slamming;
 pub mod strip_table;
 pub mod strip_theory;
+pub mod wave_readings;
 
 use crate::error::{Error, Result};
 use section::HalfSection;

@@ -31,8 +31,60 @@ pub struct RelativeMotion {
     pub velocity: C64,
 }
 
-/// Relative motion at station x, with dynamic swell-up factor `swell_up` (1 for none).
+/// Relative motion at station x, with dynamic swell-up factor `swell_up` (1 for none): the project's
+/// definition ([`Definition::default`] with the factor), Ds/Dt with its forward-speed terms.
 pub fn at_station(r: &Response, x: f64, swell_up: f64) -> Result<RelativeMotion> {
+    at_station_as(
+        r,
+        x,
+        &Definition {
+            swell_up,
+            ..Definition::default()
+        },
+    )
+}
+
+/// Which rate of change of the relative motion is called the relative velocity.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum VelocityDefinition {
+    /// Ds/Dt = i w_e s + U eta5 + i k U zeta: the rate seen in an earth-fixed transverse plane (2D+t), the
+    /// project's default (Journee & Adegeest 2003).
+    #[default]
+    EarthFixedPlane,
+    /// i w_e s + i k U zeta: as the default without the forward-speed term of pitch U eta5.
+    WithoutPitchSpeedTerm,
+    /// ds/dt = i w_e s at a fixed station of the ship, with no forward-speed term at all: Veen (2010)
+    /// eq. 6.2, "the time derivative of the relative elevation" at a point along the hull.
+    ShipFixedStation,
+}
+
+/// How the relative motion at a station is formed from the heave and pitch responses.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Definition {
+    /// Dynamic swell-up factor c >= 1 on the relative motion and velocity (1: none).
+    pub swell_up: f64,
+    pub velocity: VelocityDefinition,
+    /// Take the heave of the centre of gravity, eta3 - x_G eta5, with the pitch lever x measured from
+    /// amidships: s = (eta3 - x_G eta5) - x eta5 - zeta. This is Veen's eq. 6.1 (the keel amidships on the
+    /// origin) fed with a heave amplitude reported at G; it differs from the consistent s by -x_G eta5.
+    /// `None`: heave and pitch about the same origin (consistent).
+    pub heave_of_g_at: Option<f64>,
+}
+
+impl Default for Definition {
+    fn default() -> Self {
+        Self {
+            swell_up: 1.0,
+            velocity: VelocityDefinition::default(),
+            heave_of_g_at: None,
+        }
+    }
+}
+
+/// Relative motion at station x by `def` (see [`Definition`]); the default is the module's s and Ds/Dt.
+pub fn at_station_as(r: &Response, x: f64, def: &Definition) -> Result<RelativeMotion> {
+    let swell_up = def.swell_up;
     if !(swell_up.is_finite() && swell_up >= 1.0) {
         return Err(Error::Invalid(format!(
             "swell-up factor must be >= 1, got {swell_up}"
@@ -40,8 +92,19 @@ pub fn at_station(r: &Response, x: f64, swell_up: f64) -> Result<RelativeMotion>
     }
     let k = r.wave_number;
     let zeta = C64::new(0.0, k * x).exp();
-    let s = r.heave - r.pitch * x - zeta;
-    let v = C64::new(0.0, r.omega_e) * s + r.pitch * r.speed + C64::new(0.0, k * r.speed) * zeta;
+    let heave = match def.heave_of_g_at {
+        Some(xg) => r.heave - r.pitch * xg,
+        None => r.heave,
+    };
+    let s = heave - r.pitch * x - zeta;
+    let ship_frame = C64::new(0.0, r.omega_e) * s;
+    let v = match def.velocity {
+        VelocityDefinition::EarthFixedPlane => {
+            ship_frame + r.pitch * r.speed + C64::new(0.0, k * r.speed) * zeta
+        }
+        VelocityDefinition::WithoutPitchSpeedTerm => ship_frame + C64::new(0.0, k * r.speed) * zeta,
+        VelocityDefinition::ShipFixedStation => ship_frame,
+    };
     Ok(RelativeMotion {
         x,
         motion: s * swell_up,

@@ -4,7 +4,9 @@
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
 
-use super::{Case, Mode, Outcome, drops, ochi_trends, quoted, seakeeping, ships, wedges};
+use super::{
+    Case, Mode, Outcome, drops, entry_velocities, ochi_trends, quoted, seakeeping, ships, wedges,
+};
 use crate::error::{Error, Result};
 use crate::sph;
 
@@ -32,6 +34,7 @@ pub const KINDS: &[&str] = &[
     "ochi1958-pressures",
     "hermundstad2005-wagner",
     "hermundstad2005-assess",
+    "ochi1958-entry-velocities",
 ];
 
 /// SPH runs of this suite, by a key that names everything that determines them, and the folder where
@@ -127,6 +130,7 @@ pub fn run(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcome> {
         "ochi1958-pressures" => ships::ochi_pressures(case, memo),
         "hermundstad2005-wagner" => ships::hermundstad_wagner(case),
         "hermundstad2005-assess" => ships::hermundstad_assess(case, memo),
+        "ochi1958-entry-velocities" => entry_velocities::ochi_entry_velocities(case),
         other => Err(Error::Invalid(format!("unknown validation kind `{other}`"))),
     }
 }

@@ -262,7 +262,19 @@ pub fn hermundstad_assess(case: &Case, memo: &Memo) -> Result<Outcome> {
         });
     }
     let a = assessment(case, &sea, memo)?;
-    let facts = flare_facts(&a);
+    let mut facts = flare_facts(&a);
+    let (readings_md, readings) = super::entry_velocities::hermundstad_readings(case)?;
+    let readings_note = format!(
+        "the strip-theory chain at the panel's station under the readings of the published wave \
+         (computed; the keel entry and flare impact are where the relative motion falls through the local \
+         draft and through the draft minus the panel's lower edge):\n\n{readings_md}"
+    );
+    if let Some(r) = readings.get(1) {
+        facts.push((
+            "amplitude_reading_bound".to_string(),
+            format!("{:.2} m/s", r.velocity_bound_m_per_s),
+        ));
+    }
     let name = case.text("sensor")?;
     let Some(design) = a
         .stations
@@ -290,11 +302,14 @@ pub fn hermundstad_assess(case: &Case, memo: &Memo) -> Result<Outcome> {
             reference: Reference::Value { value: measured },
             table: None,
             figures: Vec::new(),
-            notes: vec![format!(
-                "assess gives no design pressure for sensor {name}: {}; Veen's SPH {veen} kPa and \
-                 Wagner's {wag} kPa are the published comparisons",
-                flags.join("; ")
-            )],
+            notes: vec![
+                format!(
+                    "assess gives no design pressure for sensor {name}: {}; Veen's SPH {veen} kPa and \
+                     Wagner's {wag} kPa are the published comparisons",
+                    flags.join("; ")
+                ),
+                readings_note,
+            ],
         });
     };
     let p = design.value / 1e3;
@@ -351,6 +366,7 @@ pub fn hermundstad_assess(case: &Case, memo: &Memo) -> Result<Outcome> {
                         )
                     }),
             );
+            notes.push(readings_note);
             notes
         },
     })

@@ -145,7 +145,7 @@ fn number_in(w: &str) -> Option<(usize, usize, f64)> {
 /// An event as (station, wave, speed).
 type Ev = (String, String, String);
 
-/// Events as "station 0.093 in H0.20-L6.0 at 1.2, 1.4 m/s; station 0.133 ...".
+/// Events as "station 0.093 in H0.20-T2.0 at 1.2, 1.4 m/s; station 0.133 ...".
 fn events_text(evs: &[Ev]) -> String {
     let mut groups: Vec<(&str, &str, Vec<&str>)> = Vec::new();
     for (st, w, u) in evs {
