@@ -52,8 +52,15 @@ pub fn run(a: DiffArgs) -> slamtool::Result<()> {
     let (old, new) = (diff::read(&po)?, diff::read(&pn)?);
     let changes = diff::diff(&old, &new, a.tolerance_percent / 100.0);
     if a.json.json {
+        let provenance = slamtool::provenance::Provenance::new(
+            &[po.as_path(), pn.as_path()],
+            serde_json::json!({ "tolerance_percent": a.tolerance_percent }),
+        )?;
         global::print_json(serde_json::json!({
             "tool": slamtool::provenance::TOOL,
+            "provenance": provenance,
+            "warnings": [],
+            "outputs": null,
             "old": po.display().to_string(),
             "new": pn.display().to_string(),
             "tolerance_percent": a.tolerance_percent,
