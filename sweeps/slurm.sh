@@ -28,5 +28,5 @@ if [ -z "${MERGE_ONLY:-}" ]; then
     # Exit status 3 (some cases failed) still leaves the shard's results to merge.
     "$SLAMTOOL" sweep "$SWEEP" -o "$OUT" -j "${SLURM_CPUS_PER_TASK:-1}" -q || [ $? -eq 3 ]
 else
-    "$SLAMTOOL" merge "$OUT"/shard-*-of-4 -o "$OUT"
+    "$SLAMTOOL" merge "$OUT"   # merges the shard-<i>-of-4 folders inside $OUT
 fi

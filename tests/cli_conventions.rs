@@ -39,6 +39,7 @@ const COMMANDS: &[&[&str]] = &[
     &["entry", "section"],
     &["entry", "case"],
     &["bench"],
+    &["diff"],
     &["validate"],
     &["completions"],
     &["man"],
@@ -230,6 +231,12 @@ fn json_results_share_the_common_fields() {
         &["sea", "info", SEA, "--json"],
         &["similarity", "--deadrise-deg", "30", "--json"],
         &["bench", "--steps", "1", "--particles", "1000", "--json"],
+        &[
+            "diff",
+            "reports/ochi-vform/summary.json",
+            "reports/ochi-vform/summary.json",
+            "--json",
+        ],
     ] {
         let o = slamtool(args);
         assert!(o.status.success(), "{args:?}: {}", stderr(&o));

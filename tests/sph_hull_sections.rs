@@ -2,7 +2,7 @@
 //! constant entry speeds of 0.5, 1.5 and 3 m/s and under the regular-wave entry-velocity profile that
 //! strip theory gives, and flat-bottomed, vertical-sided and full-scale sections pass without a panic,
 //! with finite peaks. Coarse (12 particles across the largest half-breadth) so the default suite stays
-//! quick; the default resolution is checked by `slamtool entry section` (see the README).
+//! quick; the default resolution is checked by `slamtool entry section` (see docs/guide/numerics.md).
 
 use slamtool::hull::Hull;
 use slamtool::impact;

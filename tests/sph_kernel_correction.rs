@@ -27,7 +27,7 @@
 //! Wagner's, so Wagner's distribution, on which the like-for-like references are built (scaled to the
 //! similarity Cp_max at 20 deg), carries far more load than the nonlinear flow; how much of the sensor
 //! shortfall is the reference's needs the similarity solution's pressure distribution, which is not in
-//! the reference data (issue #9 item 5, see the README).
+//! the reference data (issue #9 item 5, see docs/guide/numerics.md).
 //!
 //! The uncorrected last 30 deg sensor at 40 particles (and the late peaks at 80) are the jet-root
 //! lift-off: a void trapped under the surface layer at the root once the penetration is about 8.5 dp

@@ -255,7 +255,34 @@ fn scheduler_variables_pick_the_shards_the_job_scripts_expect() {
     );
     assert_eq!(o.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&o.stderr).contains("SLAMTOOL_SHARD_COUNT"));
-    // The merge step of both scripts.
+    // The merge step of both scripts: the folder every shard wrote into stands for its shard folders,
+    // and is the default output.
+    let o = slamtool(&["merge", os, "-q"], &[]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let all = sweep::merge::read(&out).unwrap();
+    assert_eq!(
+        all.cases.iter().map(|c| c.index).collect::<Vec<_>>(),
+        vec![0, 1, 2]
+    );
+    assert_eq!(all.shard, None);
+    // Shards of two different splits in one folder are refused with the reason.
+    let odd = dir.path().join("odd");
+    for s in ["shard-0-of-2", "shard-1-of-3"] {
+        std::fs::create_dir_all(odd.join(s)).unwrap();
+        std::fs::copy(
+            out.join("shard-0-of-2/sweep.json"),
+            odd.join(s).join("sweep.json"),
+        )
+        .unwrap();
+    }
+    let o = slamtool(&["merge", odd.to_str().unwrap(), "-q"], &[]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        String::from_utf8_lossy(&o.stderr).contains("different splits"),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    // The shard folders named one by one.
     let o = slamtool(
         &[
             "merge",

@@ -24,6 +24,7 @@ pub mod cache;
 pub mod comparisons;
 pub mod design_event;
 pub mod design_rule;
+pub mod diff;
 pub mod execute;
 pub mod limits;
 pub mod plan;

@@ -49,7 +49,7 @@ pub struct GlobalArgs {
 /// `--json` for the commands that produce results.
 #[derive(Debug, Clone, Args)]
 pub struct JsonArg {
-    /// Print the results as one JSON object on stdout instead of tables (schema in the README).
+    /// Print the results as one JSON object on stdout instead of tables (schema in docs/guide/conventions.md).
     #[arg(long)]
     pub json: bool,
 }
@@ -195,7 +195,7 @@ pub struct SphOptions {
     /// Kernel-gradient-corrected velocity divergence in the continuity equation (Bonet & Lok 1999):
     /// removes the spurious compression of free-surface particles ahead of the jet root and the void it
     /// traps there; read the sensors with `--sensor-method force-panel` with it (the interpolated wall
-    /// pressure then reads the root peak low). Not the default yet (README, SPH).
+    /// pressure then reads the root peak low). Not the default yet (docs/guide/numerics.md).
     #[arg(long)]
     pub divergence_correction: bool,
 }

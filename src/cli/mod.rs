@@ -10,6 +10,7 @@ mod assess;
 mod assess_tables;
 mod bench;
 mod completions;
+mod diff;
 mod entry;
 pub mod exit;
 pub mod global;
@@ -86,6 +87,9 @@ enum Command {
     /// Join the results of a sweep's shards.
     #[command(after_long_help = sweep::MERGE_EXAMPLES)]
     Merge(sweep::MergeArgs),
+    /// What moved between two assessments (their summary.json): design values, forces, verdicts.
+    #[command(after_long_help = diff::EXAMPLES)]
+    Diff(diff::DiffArgs),
     /// Print a shell completion script.
     #[command(after_long_help = completions::EXAMPLES)]
     Completions(completions::CompletionsArgs),
@@ -166,6 +170,7 @@ pub fn main() -> ExitCode {
         Command::Report(a) => report::run(a),
         Command::Sweep(a) => sweep::run(a),
         Command::Merge(a) => sweep::run_merge(a),
+        Command::Diff(a) => diff::run(a),
         Command::Completions(a) => completions::run(a, &mut command()),
         Command::Man(a) => man::run(a, command()),
     };

@@ -22,6 +22,7 @@ Examples:
 /// Examples at the end of `slamtool merge --help`.
 pub const MERGE_EXAMPLES: &str = "\
 Examples:
+  slamtool merge reports/flare
   slamtool merge reports/flare/shard-0-of-2 reports/flare/shard-1-of-2 -o reports/flare";
 
 #[derive(Debug, Args)]
@@ -59,7 +60,8 @@ pub struct SweepArgs {
 
 #[derive(Debug, Args)]
 pub struct MergeArgs {
-    /// Result folders of the shards (each with its sweep.json).
+    /// Result folders of the shards (each with its sweep.json), or the folder holding them (the --out
+    /// every shard wrote into: its shard-<i>-of-<n> folders are merged).
     #[arg(required = true, value_name = "DIR")]
     dirs: Vec<PathBuf>,
     /// Output folder [default: the folder holding the first DIR].
@@ -200,15 +202,17 @@ pub fn run(a: SweepArgs) -> Result<()> {
 }
 
 pub fn run_merge(a: MergeArgs) -> Result<()> {
-    let r = sweep::merge::merge(&a.dirs)?;
-    let out = a.out.clone().unwrap_or_else(|| {
-        a.dirs[0]
+    // A folder holding shard-<i>-of-<n> folders (one --out for every shard) stands for its shards.
+    let (dirs, parents) = sweep::merge::shard_folders(&a.dirs)?;
+    let r = sweep::merge::merge(&dirs)?;
+    let out = a.out.clone().unwrap_or_else(|| match parents.first() {
+        Some(p) => p.clone(),
+        None => dirs[0]
             .parent()
-            .map_or(PathBuf::from("."), Path::to_path_buf)
+            .map_or(PathBuf::from("."), Path::to_path_buf),
     });
     // A shard given as its sweep.json file stands for its folder.
-    let inputs: Vec<&Path> = a
-        .dirs
+    let inputs: Vec<&Path> = dirs
         .iter()
         .map(|d| match d.parent() {
             Some(p) if d.is_file() && !p.as_os_str().is_empty() => p,

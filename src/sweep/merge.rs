@@ -39,6 +39,56 @@ pub fn read(dir: &Path) -> Result<SweepResult> {
     })
 }
 
+/// The shard folders a `merge` argument stands for: a folder holding `shard-<i>-of-<n>` folders (the `--out`
+/// every shard of a cluster job writes into) stands for those folders, in shard order; any other folder or
+/// `sweep.json` file stands for itself. Returns the shard folders and, for each argument that was expanded,
+/// that folder (the default output of the merge).
+pub fn shard_folders(args: &[PathBuf]) -> Result<(Vec<PathBuf>, Vec<PathBuf>)> {
+    let mut dirs = Vec::new();
+    let mut parents = Vec::new();
+    for a in args {
+        let mut shards: Vec<(usize, usize, PathBuf)> = Vec::new();
+        if a.is_dir() {
+            for e in std::fs::read_dir(a).map_err(|e| Error::io(a, e))? {
+                let e = e.map_err(|e| Error::io(a, e))?;
+                let name = e.file_name().to_string_lossy().into_owned();
+                let Some((i, n)) = name
+                    .strip_prefix("shard-")
+                    .and_then(|r| r.split_once("-of-"))
+                    .and_then(|(i, n)| Some((i.parse().ok()?, n.parse().ok()?)))
+                else {
+                    continue;
+                };
+                if e.path().join("sweep.json").is_file() {
+                    shards.push((n, i, e.path()));
+                }
+            }
+        }
+        if shards.is_empty() {
+            dirs.push(a.clone());
+            continue;
+        }
+        shards.sort();
+        let counts: Vec<usize> = shards.iter().map(|s| s.0).collect();
+        if counts.iter().any(|&n| n != counts[0]) {
+            return Err(Error::Invalid(format!(
+                "{}: holds shards of different splits ({}): name the shard folders of one split, e.g. {}/shard-*-of-{}",
+                a.display(),
+                shards
+                    .iter()
+                    .map(|s| format!("shard-{}-of-{}", s.1, s.0))
+                    .collect::<Vec<_>>()
+                    .join(", "),
+                a.display(),
+                counts[counts.len() - 1]
+            )));
+        }
+        parents.push(a.clone());
+        dirs.extend(shards.into_iter().map(|s| s.2));
+    }
+    Ok((dirs, parents))
+}
+
 /// The first 12 characters of a hash or key from a file, for a message (a short or tampered value is
 /// shown as it is, never cut inside a character).
 fn short(s: &str) -> String {

@@ -56,7 +56,7 @@ pub fn document(r: &SweepResult) -> Result<Document> {
         "Each case is one variant (hull transformation and operating condition) assessed as `slamtool assess` \
          does at the sweep's fidelity; its design pressure is the largest over its sensors and events, its \
          slam probability (Ochi's criterion, per encounter) the largest over its stations, speeds and \
-         irregular seas. The hull transformations are defined in the README (design-space sweeps)."
+         irregular seas. The hull transformations are defined in docs/guide/sweeps.md."
             .into(),
     ));
     blocks.push(Block::Heading {

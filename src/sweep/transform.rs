@@ -213,7 +213,7 @@ pub fn variant_toml(
     s += &format!(
         "description = {}\n",
         q(&format!(
-            "Sweep variant of {} (loading '{}'): {label}. Written by slamtool sweep; see the README \
+            "Sweep variant of {} (loading '{}'): {label}. Written by slamtool sweep; see docs/guide/sweeps.md \
              (hull transformations) for the definitions.",
             base.source.display(),
             loading.name
