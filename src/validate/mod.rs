@@ -13,6 +13,7 @@ pub mod compare;
 pub mod conditions;
 pub mod document;
 pub mod drops;
+pub mod hermundstad_forcing;
 pub mod known;
 pub mod ochi_trends;
 pub mod plot;

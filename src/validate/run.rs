@@ -4,7 +4,7 @@
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
 
-use super::{Case, Mode, Outcome, drops, ochi_trends, quoted, seakeeping, ships, wedges};
+use super::{Case, Mode, Outcome, drops, hermundstad_forcing, ochi_trends, quoted, seakeeping, ships, wedges};
 use crate::error::{Error, Result};
 use crate::sph;
 
@@ -32,6 +32,7 @@ pub const KINDS: &[&str] = &[
     "ochi1958-pressures",
     "hermundstad2005-wagner",
     "hermundstad2005-assess",
+    "hermundstad2005-measured-forcing",
 ];
 
 /// SPH runs of this suite, by a key that names everything that determines them, and the folder where
@@ -127,6 +128,9 @@ pub fn run(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcome> {
         "ochi1958-pressures" => ships::ochi_pressures(case, memo),
         "hermundstad2005-wagner" => ships::hermundstad_wagner(case),
         "hermundstad2005-assess" => ships::hermundstad_assess(case, memo),
+        "hermundstad2005-measured-forcing" => {
+            hermundstad_forcing::measured_forcing(case, mode, memo)
+        }
         other => Err(Error::Invalid(format!("unknown validation kind `{other}`"))),
     }
 }
