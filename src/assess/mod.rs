@@ -26,6 +26,7 @@ pub mod design_event;
 pub mod design_rule;
 pub mod execute;
 pub mod limits;
+pub mod measured;
 pub mod plan;
 pub mod results;
 pub mod trends;

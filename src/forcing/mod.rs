@@ -21,4 +21,4 @@ pub mod keel_entry;
 pub mod record_csv;
 
 pub use keel_entry::{MeasuredEntry, measured_entry};
-pub use record_csv::{Column, ForcingRecord, read_record};
+pub use record_csv::{Column, ForcingRecord, parse_record_text, read_record};

@@ -98,6 +98,12 @@ pub fn read_record(path: &Path) -> Result<ForcingRecord> {
     parse_record(&SourceText::read(path)?)
 }
 
+/// Parse a record from text that did not come from disk (tests, generated records); `name` stands for
+/// the file in errors.
+pub fn parse_record_text(name: &str, text: &str) -> Result<ForcingRecord> {
+    parse_record(&SourceText::from_string(name, text))
+}
+
 /// Split a line into its cells with the 1-based character column where each (trimmed) cell starts.
 fn cells(line: &str) -> Vec<(usize, &str)> {
     let mut out = Vec::new();
