@@ -183,7 +183,12 @@ pub fn measured_entry(r: &ForcingRecord, draft: f64, max_depth: f64) -> Result<M
     }];
     let mut end = "the record ends".to_string();
     let mut depth = 0.0;
+    // Samples closer to the entry than this are the entry itself (a crossing exactly at a sample).
+    let same = 1e-9 * (t[n - 1] - t[0]);
     for k in first..n {
+        if t[k] - t_e <= same {
+            continue;
+        }
         let prev = samples[samples.len() - 1];
         depth = match r.column {
             Column::RelativeElevation => draft - r.values[k],

@@ -309,6 +309,7 @@ pub fn measured_forcing(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcome>
             c.dp_m
         ),
     ];
+    o.fact("record_error", format!("{:.5} m/s", c.record_error));
     o.fact("sph_peak", format!("{:.2} kPa", c.sph_peak_kpa));
     o.fact("analytic_peak", format!("{:.2} kPa", c.analytic_peak_kpa));
     o.fact("sph_delay", format!("{} s", show(c.sph_delay_s)));
