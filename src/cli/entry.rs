@@ -354,9 +354,7 @@ fn hull_section(a: SectionArgs) -> slamtool::Result<()> {
             )
         }
         (None, None) => {
-            return Err(slamtool::Error::Invalid(
-                "give --speed or --forcing".into(),
-            ));
+            return Err(slamtool::Error::Invalid("give --speed or --forcing".into()));
         }
     };
     let input_refs: Vec<&std::path::Path> = inputs.iter().map(PathBuf::as_path).collect();

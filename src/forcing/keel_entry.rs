@@ -221,7 +221,9 @@ pub fn measured_entry(r: &ForcingRecord, draft: f64, max_depth: f64) -> Result<M
         column: r.column,
         velocity_from: match r.column {
             Column::RelativeElevation => DIFFERENTIATION.into(),
-            Column::RelativeVelocity => "relative velocity as recorded, negated (V = -Ds/Dt)".into(),
+            Column::RelativeVelocity => {
+                "relative velocity as recorded, negated (V = -Ds/Dt)".into()
+            }
             Column::EntryVelocity => "entry velocity as recorded".into(),
         },
         draft,

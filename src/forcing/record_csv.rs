@@ -250,9 +250,7 @@ fn parse_header(
             return Err(err(
                 n,
                 col,
-                format!(
-                    "column `{cell}` has no unit: write it as `name [unit]` ({expected})"
-                ),
+                format!("column `{cell}` has no unit: write it as `name [unit]` ({expected})"),
             ));
         };
         let f = accepted
@@ -317,9 +315,15 @@ mod tests {
     #[test]
     fn header_errors_are_located() {
         let e = parse("time [s], relative_elevation\n").unwrap_err();
-        assert!(e.starts_with("r.csv:1:11:") && e.contains("has no unit"), "{e}");
+        assert!(
+            e.starts_with("r.csv:1:11:") && e.contains("has no unit"),
+            "{e}"
+        );
         let e = parse("time [s], relative_elevation [ft]\n").unwrap_err();
-        assert!(e.starts_with("r.csv:1:11:") && e.contains("unknown unit"), "{e}");
+        assert!(
+            e.starts_with("r.csv:1:11:") && e.contains("unknown unit"),
+            "{e}"
+        );
         let e = parse("t [s], relative_elevation [m]\n").unwrap_err();
         assert!(e.starts_with("r.csv:1:1:"), "{e}");
         let e = parse("time [s], heave [m]\n").unwrap_err();

@@ -144,14 +144,22 @@ fn compute(case: &Case, mode: Mode, memo: &Memo) -> Result<Computed> {
     let est = crate::assess::analytic::estimate_in(&ec, loading.rho)?;
     let analytic_peak_kpa = est.sensors[0].peak_pa / 1e3;
     // The panel's analytic history for its impact instant (the record's samples; 2 ms apart).
-    let (t, v): (Vec<f64>, Vec<f64>) = entry.samples.iter().map(|s| (s.t, s.velocity.max(0.0))).unzip();
+    let (t, v): (Vec<f64>, Vec<f64>) = entry
+        .samples
+        .iter()
+        .map(|s| (s.t, s.velocity.max(0.0)))
+        .unzip();
     let mlm = Mlm::new_immersed(&points, 0.0, &t, &v, loading.rho)?;
     let s = &sensors[0];
     let panel = ((s.s_m - 0.5 * s.width_m).max(0.0), s.s_m + 0.5 * s.width_m);
     let hist = mlm.sensor_histories(&[panel]).remove(0);
     let times = mlm.times();
     let analytic_delay_s = impact_time(&times, &hist);
-    let analytic_history = times.iter().zip(&hist).map(|(t, p)| [*t, p / 1e3]).collect();
+    let analytic_history = times
+        .iter()
+        .zip(&hist)
+        .map(|(t, p)| [*t, p / 1e3])
+        .collect();
     let n = case.particles(mode)?;
     let cutoff = case.number("filter_hz")?;
     let t_end = case.number("t_end_s")?;
@@ -207,7 +215,10 @@ pub fn measured_forcing(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcome>
     let measured = toml_number(&r, &["measured", "panel_peak_pressure_kpa"])?;
     let veen = toml_number(&r, &["reported_comparisons", "sph_peak_pressure_kpa"])?;
     let wagner = toml_number(&r, &["reported_comparisons", "wagner_peak_pressure_kpa"])?;
-    let delay = toml_number(&r, &["reported_comparisons", "flare_impact_delay_after_keel_s"])?;
+    let delay = toml_number(
+        &r,
+        &["reported_comparisons", "flare_impact_delay_after_keel_s"],
+    )?;
     let compare = case.text("compare")?;
     let c = compute(case, mode, memo)?;
     let show = |d: Option<f64>| d.map_or("not struck".to_string(), |d| format!("{d:.3}"));
@@ -296,10 +307,7 @@ pub fn measured_forcing(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcome>
             e.profile_end,
             c.record_error
         ),
-        format!(
-            "record provenance: {}",
-            e.provenance.join(" | ")
-        ),
+        format!("record provenance: {}", e.provenance.join(" | ")),
         format!(
             "panel impact: first instant the panel's pressure reaches {:.0} % of its own peak (SPH: the \
              {} Hz low-passed history); SPH dp {:.4} m; the section is the reconstructed hull's, the \

@@ -204,9 +204,20 @@ pub fn markdown(s: &Suite) -> String {
         if let Some(t) = &c.table {
             // A short table (a comparison of a few sources) is written out here; a long one is linked.
             if t.rows.len() <= INLINE_TABLE_ROWS {
-                out += &format!("\n| {} |\n|{}\n", t.header.iter().map(|h| md(h)).collect::<Vec<_>>().join(" | "), "---|".repeat(t.header.len()));
+                out += &format!(
+                    "\n| {} |\n|{}\n",
+                    t.header
+                        .iter()
+                        .map(|h| md(h))
+                        .collect::<Vec<_>>()
+                        .join(" | "),
+                    "---|".repeat(t.header.len())
+                );
                 for row in &t.rows {
-                    out += &format!("| {} |\n", row.iter().map(|x| md(x)).collect::<Vec<_>>().join(" | "));
+                    out += &format!(
+                        "| {} |\n",
+                        row.iter().map(|x| md(x)).collect::<Vec<_>>().join(" | ")
+                    );
                 }
             }
             out += &format!("\nNumbers: [{0}/table.csv]({0}/table.csv)\n", c.name);

@@ -4,7 +4,9 @@
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
 
-use super::{Case, Mode, Outcome, drops, hermundstad_forcing, ochi_trends, quoted, seakeeping, ships, wedges};
+use super::{
+    Case, Mode, Outcome, drops, hermundstad_forcing, ochi_trends, quoted, seakeeping, ships, wedges,
+};
 use crate::error::{Error, Result};
 use crate::sph;
 
