@@ -25,6 +25,7 @@ pub mod analytic;
 pub mod assess;
 pub mod error;
 pub mod files;
+pub mod forcing;
 pub mod hull;
 pub mod impact;
 pub mod input;

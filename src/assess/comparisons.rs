@@ -227,6 +227,16 @@ fn hermundstad(hull: &Hull, plan: &Plan, a: &Assessment) -> Result<Validation> {
             note: pressure_note(what),
         });
     }
+    // A station driven by a measured record has no strip-theory relative motion to compare.
+    if let Some(m) = plan.forcing.iter().find(|m| (m.station - f).abs() < 1e-6) {
+        out.notes.push(format!(
+            "the station at {f} Lpp is driven by the measured record {} (keel entry at {:.3} m/s), not by \
+             strip theory: the panel pressure above is that record's; the strip-theory relative-velocity \
+             comparisons are not made",
+            m.file, m.entry_velocity_m_per_s
+        ));
+        return Ok(out);
+    }
     // Flare impact: the undisturbed water surface reaches the panel's lower edge.
     let sec = hull.section_at(x)?;
     let lower = sec.point_at_girth((panel.girth - 0.5 * panel.diameter).max(0.0));

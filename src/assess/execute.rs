@@ -554,6 +554,11 @@ pub fn run(
         "convergence_levels": s.study.levels,
         "convergence_ratio": s.study.ratio,
         "strips": s.strips,
+        "measured_forcing": s
+            .forcing
+            .iter()
+            .map(|r| serde_json::json!({"station": r.station, "file": r.file.display().to_string()}))
+            .collect::<Vec<_>>(),
         "design_value": "per sensor and station, the largest design value over the events with an SPH run at \
                          that station (all events where none has one); per event: SPH slamming peak + its GCI \
                          uncertainty where converged, else the larger of that and the analytic (MLM) peak, \
@@ -561,6 +566,7 @@ pub fn run(
     });
     let mut inputs = hull.input_files();
     inputs.push(sea.source.as_path());
+    inputs.extend(s.forcing.iter().map(|r| r.file.as_path()));
     let provenance = Provenance::new(&inputs, settings.clone())?;
     let irregular = plan
         .motions
@@ -602,6 +608,7 @@ pub fn run(
         limits: s.limits.clone(),
         limit_violations: Vec::new(),
         warnings: plan.warnings.clone(),
+        measured_forcing: plan.forcing.clone(),
     };
     a.validation = super::comparisons::validate(hull, &sea.name, &plan, &a)?;
     a.limit_violations = super::limits::check(&a, &s.limits);

@@ -27,6 +27,7 @@ pub mod design_rule;
 pub mod diff;
 pub mod execute;
 pub mod limits;
+pub mod measured;
 pub mod plan;
 pub mod results;
 pub mod trends;

@@ -72,6 +72,9 @@ pub struct Settings {
     pub design_basis: super::design_event::Basis,
     /// Warnings from reading the settings (e.g. a station outside the perpendiculars), kept in the results.
     pub warnings: Vec<String>,
+    /// Measured relative-motion records of stations, which replace strip theory there
+    /// ([`super::measured`]).
+    pub forcing: Vec<super::measured::StationRecord>,
 }
 
 impl Default for Settings {
@@ -91,6 +94,7 @@ impl Default for Settings {
             limits: Vec::new(),
             design_basis: super::design_event::Basis::MostProbableLargest,
             warnings: Vec::new(),
+            forcing: Vec::new(),
         }
     }
 }
@@ -225,6 +229,8 @@ pub struct Plan {
     /// In the order speed, wave, station.
     pub events: Vec<Event>,
     pub warnings: Vec<String>,
+    /// The measured records that drive stations instead of strip theory.
+    pub forcing: Vec<super::measured::MeasuredForcing>,
 }
 
 /// Plan an assessment: strip theory and the events.
@@ -236,11 +242,17 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
             sea.source.display()
         )));
     }
-    let at = if s.stations.is_empty() {
+    let mut at = if s.stations.is_empty() {
         impact::sensor_stations(hull)
     } else {
         s.stations.clone()
     };
+    // A station with a measured record is assessed whether or not it is listed.
+    for r in &s.forcing {
+        if !at.iter().any(|&f| (f - r.station).abs() < 1e-9) {
+            at.push(r.station);
+        }
+    }
     let mut stations = Vec::new();
     for &f in &at {
         if !(f.is_finite() && (0.0..=1.0).contains(&f)) {
@@ -355,7 +367,8 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
             q.sensors.last().map_or("", |s| s.name.as_str()),
         ));
     }
-    Ok(Plan {
+    let threshold = motions.slam_threshold_velocity_m_s;
+    let mut p = Plan {
         loading: loading.name.clone(),
         stations: at,
         speeds,
@@ -365,7 +378,10 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
         events,
         warnings,
         rho: loading.rho,
-    })
+        forcing: Vec::new(),
+    };
+    p.forcing = super::measured::apply(&mut p, hull, loading, &s.forcing, threshold)?;
+    Ok(p)
 }
 
 /// A regular wave as an event needs it: its name, frequency (rad/s), encounter frequency (rad/s) and

@@ -470,6 +470,10 @@ pub struct Assessment {
     pub limits: Vec<super::limits::Limit>,
     pub limit_violations: Vec<String>,
     pub warnings: Vec<String>,
+    /// Stations driven by a measured relative-motion record instead of strip theory: the file, its
+    /// provenance lines and the keel entry found in it ([`super::measured`]).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub measured_forcing: Vec<super::measured::MeasuredForcing>,
 }
 
 /// The per-station design values of a list of events at the stations `at` (fraction of Lpp aft of the

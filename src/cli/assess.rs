@@ -20,7 +20,9 @@ Examples:
   slamtool assess hulls/ochi-vform.toml --sea sea_states/ochi-1958.toml
   slamtool assess hulls/ochi-vform.toml --sea sea_states/ochi-1958.toml --fidelity analytic
   slamtool assess hulls/ochi-vform.toml --sea sea_states/ochi-1958.toml --station 0.093,0.133 \\
-      --speeds 2.0,2.4 --max-pressure-kpa 20 -o reports/ochi-gate";
+      --speeds 2.0,2.4 --max-pressure-kpa 20 -o reports/ochi-gate
+  slamtool assess hulls/car-carrier-hm2005.toml --sea sea_states/car-carrier-hm2005.toml --fidelity analytic \\
+      --forcing 0.05=data/forcing/hermundstad2005-flare-reconstructed.csv";
 
 #[derive(Debug, Args)]
 pub struct AssessArgs {
@@ -56,6 +58,11 @@ pub struct AssessArgs {
         allow_negative_numbers = true
     )]
     speeds: Vec<f64>,
+    /// A measured or externally computed relative-motion record of a station, STATION=FILE.csv (station
+    /// as a fraction of Lpp aft of the FP; repeatable): that station is driven by the record instead of
+    /// strip theory (docs/guide/measured-forcing.md). Needs a single speed (the record's).
+    #[arg(long, value_name = "STATION=FILE.csv")]
+    forcing: Vec<String>,
     /// screen: analytic everywhere, then SPH for the governing event of each station (highest analytic
     /// sensor pressure); sph: SPH for every event, with the analytic estimate and a convergence statement
     /// beside each peak; analytic: generalised Wagner + MLM for every event (seconds).
@@ -206,7 +213,13 @@ pub fn run(a: AssessArgs) -> Result<()> {
             origin: "--max-pressure-kpa".into(),
         });
     }
+    let forcing = a
+        .forcing
+        .iter()
+        .map(|t| assess::measured::StationRecord::parse(t))
+        .collect::<Result<Vec<_>>>()?;
     let settings = Settings {
+        forcing,
         loading: a.loading.clone(),
         stations,
         speeds: (!a.speeds.is_empty()).then(|| a.speeds.clone()),

@@ -30,7 +30,9 @@ const SECTION_EXAMPLES: &str = "\
 Examples:
   slamtool entry section hulls/ochi-vform.toml --station 0.1 --speed 2.0 -o out/ochi-st0.1
   slamtool entry section hulls/car-carrier-hm2005.toml --station 0.05 --speed 3 --resolution medium
-  slamtool entry section hulls/ochi-vform.toml --x-m 2.4 --speed 1.5 --json";
+  slamtool entry section hulls/ochi-vform.toml --x-m 2.4 --speed 1.5 --json
+  slamtool entry section hulls/car-carrier-hm2005.toml --station 0.05 \\
+      --forcing data/forcing/hermundstad2005-flare-reconstructed.csv --t-end 0.4";
 
 const CASE_EXAMPLES: &str = "\
 Examples:
@@ -46,7 +48,8 @@ pub enum EntryCommand {
     /// A case file (TOML) with full control of section, motion, resolution and numerics.
     #[command(after_long_help = CASE_EXAMPLES)]
     Case(CaseArgs),
-    /// A hull section (from a hull file) entering calm water at constant speed, keel first.
+    /// A hull section (from a hull file) entering calm water keel first, at constant speed or with a
+    /// measured relative-motion record (--forcing).
     #[command(after_long_help = SECTION_EXAMPLES)]
     Section(SectionArgs),
 }
@@ -57,9 +60,19 @@ pub struct SectionArgs {
     hull: PathBuf,
     #[command(flatten)]
     station: StationArg,
-    /// Constant entry speed (m/s).
-    #[arg(long)]
-    speed: f64,
+    /// Constant entry speed (m/s); or give --forcing.
+    #[arg(long, required_unless_present = "forcing", conflicts_with = "forcing")]
+    speed: Option<f64>,
+    /// A measured or externally computed relative-motion record of the station (CSV: `time [s]` and
+    /// `relative_elevation [m]`, `relative_velocity [m/s]` or `entry_velocity [m/s]`, `#` provenance
+    /// lines): the keel-entry instant is found from it and the section enters with its velocity
+    /// (docs/guide/measured-forcing.md).
+    #[arg(long, value_name = "FILE.csv")]
+    forcing: Option<PathBuf>,
+    /// Loading condition whose local draft at the station places the keel for --forcing [default: the
+    /// hull's first].
+    #[arg(long, requires = "forcing")]
+    loading: Option<String>,
     #[command(flatten)]
     numerics: Numerics,
     #[command(flatten)]
@@ -288,10 +301,11 @@ fn constant_speed(
 }
 
 fn hull_section(a: SectionArgs) -> slamtool::Result<()> {
-    if !(a.speed.is_finite() && a.speed > 0.0) {
+    if let Some(speed) = a.speed
+        && !(speed.is_finite() && speed > 0.0)
+    {
         return Err(slamtool::Error::Invalid(format!(
-            "--speed must be a positive number, got {}",
-            a.speed
+            "--speed must be a positive number, got {speed}"
         )));
     }
     check_common(&a.common)?;
@@ -304,17 +318,64 @@ fn hull_section(a: SectionArgs) -> slamtool::Result<()> {
         .hull
         .file_stem()
         .map_or("hull".into(), |s| s.to_string_lossy().into_owned());
-    let name = format!("{stem}_x{x:.3}m_{}ms", a.speed);
     let mut set = settings(Some(&a.numerics), &a.common);
     set["x_m"] = serde_json::json!(x);
     set["station"] = serde_json::json!(hull.aft_of_fp(x));
-    set["speed_m_per_s"] = serde_json::json!(a.speed);
+    let mut inputs: Vec<PathBuf> = hull.input_files().iter().map(|p| p.to_path_buf()).collect();
+    let (name, motion) = match (&a.forcing, a.speed) {
+        (Some(file), _) => {
+            let loading = hull.loading(a.loading.as_deref())?;
+            let station = slamtool::impact::seakeeping_station(&hull, loading, hull.aft_of_fp(x))?;
+            let record = slamtool::forcing::read_record(file)?;
+            let entry = slamtool::forcing::measured_entry(&record, station.draft, station.height)?;
+            global::note(&format!(
+                "{}: keel entry at {:.4} s of the record (local draft {:.4} m at loading '{}') at {:.3} m/s; \
+                 {}; {} samples until {}",
+                file.display(),
+                entry.t_entry,
+                entry.draft,
+                loading.name,
+                entry.entry_velocity,
+                entry.velocity_from,
+                entry.samples.len(),
+                entry.profile_end
+            ));
+            for p in &entry.provenance {
+                global::note(&format!("  record: {p}"));
+            }
+            set["loading"] = serde_json::json!(loading.name);
+            set["forcing"] = serde_json::to_value(&entry).unwrap_or_default();
+            inputs.push(file.clone());
+            let rec = file
+                .file_stem()
+                .map_or("forcing".into(), |s| s.to_string_lossy().into_owned());
+            (format!("{stem}_x{x:.3}m_{rec}"), entry.motion())
+        }
+        (None, Some(speed)) => {
+            set["speed_m_per_s"] = serde_json::json!(speed);
+            (
+                format!("{stem}_x{x:.3}m_{speed}ms"),
+                MotionSpec::Constant { speed_m_s: speed },
+            )
+        }
+        (None, None) => {
+            return Err(slamtool::Error::Invalid("give --speed or --forcing".into()));
+        }
+    };
+    let input_refs: Vec<&std::path::Path> = inputs.iter().map(PathBuf::as_path).collect();
     let run = Run {
         common: &a.common,
-        prov: Provenance::new(&hull.input_files(), set)?,
+        prov: Provenance::new(&input_refs, set)?,
         warnings: st.warning.into_iter().collect(),
     };
-    constant_speed(&name, &section, a.speed, sensors, &a.numerics, run)
+    let setup = sph::case::resolve(
+        &name,
+        &section,
+        &motion,
+        sensors,
+        &overrides(&a.numerics, run.common),
+    )?;
+    go(setup, run, &name)
 }
 
 fn case(a: CaseArgs) -> slamtool::Result<()> {

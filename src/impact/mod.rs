@@ -96,12 +96,14 @@ pub fn station_sensors(hull: &Hull, x: f64) -> Vec<SensorSpec> {
 /// The prescribed motion of a 2D run: the downward entry velocity from keel entry until it reverses
 /// (or the keel is as deep as the profile goes), as a table [t_s, v_m_per_s].
 pub fn entry_motion(entry: &KeelEntry) -> MotionSpec {
+    entry_motion_of(&entry.samples)
+}
+
+/// The prescribed motion of a 2D run from entry-velocity samples (of strip theory or of a measured record,
+/// [`crate::forcing`]): [t since keel entry, max(V, 0)].
+pub fn entry_motion_of(samples: &[crate::seakeeping::relative_motion::EntrySample]) -> MotionSpec {
     MotionSpec::Prescribed {
-        table: entry
-            .samples
-            .iter()
-            .map(|s| [s.t, s.velocity.max(0.0)])
-            .collect(),
+        table: samples.iter().map(|s| [s.t, s.velocity.max(0.0)]).collect(),
     }
 }
 

@@ -14,6 +14,7 @@ pub mod conditions;
 pub mod document;
 pub mod drops;
 pub mod entry_velocities;
+pub mod hermundstad_forcing;
 pub mod known;
 pub mod ochi_trends;
 pub mod plot;

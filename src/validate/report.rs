@@ -201,12 +201,33 @@ pub fn markdown(s: &Suite) -> String {
         for f in &c.figures {
             out += &format!("\n![{}]({}/{}.svg)\n", md(&f.title), c.name, f.name);
         }
-        if c.table.is_some() {
+        if let Some(t) = &c.table {
+            // A short table (a comparison of a few sources) is written out here; a long one is linked.
+            if t.rows.len() <= INLINE_TABLE_ROWS {
+                out += &format!(
+                    "\n| {} |\n|{}\n",
+                    t.header
+                        .iter()
+                        .map(|h| md(h))
+                        .collect::<Vec<_>>()
+                        .join(" | "),
+                    "---|".repeat(t.header.len())
+                );
+                for row in &t.rows {
+                    out += &format!(
+                        "| {} |\n",
+                        row.iter().map(|x| md(x)).collect::<Vec<_>>().join(" | ")
+                    );
+                }
+            }
             out += &format!("\nNumbers: [{0}/table.csv]({0}/table.csv)\n", c.name);
         }
     }
     out
 }
+
+/// Largest case table written out in the Markdown report (longer ones are linked only).
+const INLINE_TABLE_ROWS: usize = 8;
 
 fn count(s: &Suite, v: &[super::Verdict]) -> usize {
     s.cases.iter().filter(|c| v.contains(&c.verdict)).count()

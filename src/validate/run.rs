@@ -5,7 +5,8 @@ use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
 
 use super::{
-    Case, Mode, Outcome, drops, entry_velocities, ochi_trends, quoted, seakeeping, ships, wedges,
+    Case, Mode, Outcome, drops, entry_velocities, hermundstad_forcing, ochi_trends, quoted, seakeeping,
+    ships, wedges,
 };
 use crate::error::{Error, Result};
 use crate::sph;
@@ -35,6 +36,7 @@ pub const KINDS: &[&str] = &[
     "hermundstad2005-wagner",
     "hermundstad2005-assess",
     "ochi1958-entry-velocities",
+    "hermundstad2005-measured-forcing",
 ];
 
 /// SPH runs of this suite, by a key that names everything that determines them, and the folder where
@@ -131,6 +133,9 @@ pub fn run(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcome> {
         "hermundstad2005-wagner" => ships::hermundstad_wagner(case),
         "hermundstad2005-assess" => ships::hermundstad_assess(case, memo),
         "ochi1958-entry-velocities" => entry_velocities::ochi_entry_velocities(case),
+        "hermundstad2005-measured-forcing" => {
+            hermundstad_forcing::measured_forcing(case, mode, memo)
+        }
         other => Err(Error::Invalid(format!("unknown validation kind `{other}`"))),
     }
 }

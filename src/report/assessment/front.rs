@@ -405,6 +405,7 @@ pub fn summary(r: &mut Report, saved: &Saved) {
             r.push(Block::List(over));
         }
     }
+    super::forcing::section(r, s);
     let failed = s["failed_runs"].as_u64().unwrap_or(0);
     r.para(&format!(
         "Runs that failed: {failed}. Events: {}.",

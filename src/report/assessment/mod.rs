@@ -11,6 +11,7 @@
 //! present); appendix (plotted numbers, run settings).
 
 pub mod data;
+mod forcing;
 mod front;
 mod impact;
 mod motions;
