@@ -7,6 +7,8 @@ pub mod generalised_wagner;
 pub mod logvinovich_mlm;
 pub mod section_profile;
 pub mod similarity;
+pub mod similarity_sensor;
+pub mod similarity_table;
 mod similarity_bem;
 mod similarity_mesh;
 mod similarity_solver;
