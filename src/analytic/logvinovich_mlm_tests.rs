@@ -262,7 +262,10 @@ fn corrected_wedge_peak_is_the_similarity_peak() {
         assert!((cp / closed - 1.0).abs() < 5e-3, "{deg}: {cp} vs {closed}");
         let corrected = m.corrected_peak(&s).1 / q;
         let sim = tab::cp_max(deg).unwrap();
-        assert!((corrected / sim - 1.0).abs() < 5e-3, "{deg}: {corrected} vs {sim}");
+        assert!(
+            (corrected / sim - 1.0).abs() < 5e-3,
+            "{deg}: {corrected} vs {sim}"
+        );
         let k = m.correction(&s);
         assert!(!k.above_table && k.factor < 1.0, "{deg}: {k:?}");
     }
@@ -272,7 +275,11 @@ fn corrected_wedge_peak_is_the_similarity_peak() {
 /// samples are not corrected.
 #[test]
 fn correction_above_the_table_and_at_a_flat_keel() {
-    let half = [[0.0, 0.0], [0.1, 0.0], [0.2, 0.1 * 70f64.to_radians().tan()]];
+    let half = [
+        [0.0, 0.0],
+        [0.1, 0.0],
+        [0.2, 0.1 * 70f64.to_radians().tan()],
+    ];
     let t = times(200, 1e-4);
     let m = Mlm::new(&half, &t, &vec![2.0; t.len()], 1000.0).unwrap();
     let k = m.corrections();

@@ -28,7 +28,11 @@ impl Mlm {
 
     /// The correction of every kept sample.
     pub fn corrections(&self) -> Vec<PeakCorrection> {
-        self.hist.states.iter().map(|s| self.correction(s)).collect()
+        self.hist
+            .states
+            .iter()
+            .map(|s| self.correction(s))
+            .collect()
     }
 
     /// [`Mlm::sensor_histories`] with every sample multiplied by its correction factor, and the

@@ -363,7 +363,12 @@ mod tests {
             .map(|r| {
                 let s = r.solution.as_ref().unwrap();
                 let copy = crate::analytic::similarity_table::cp_max(r.deadrise_deg).unwrap();
-                assert!((copy / s.cp_max - 1.0).abs() < 1e-4, "{}: {copy} vs {}", r.deadrise_deg, s.cp_max);
+                assert!(
+                    (copy / s.cp_max - 1.0).abs() < 1e-4,
+                    "{}: {copy} vs {}",
+                    r.deadrise_deg,
+                    s.cp_max
+                );
                 s.cp_max / wagner_cp_max(r.deadrise_deg)
             })
             .collect();
@@ -393,13 +398,26 @@ mod tests {
             );
             let b = x.deadrise_deg.to_radians();
             let t: Vec<f64> = (0..=20).map(|k| k as f64 * 1e-4).collect();
-            let m = Mlm::new(&[[0.0, 0.0], [0.5, 0.5 * b.tan()]], &t, &vec![5.0; t.len()], 1000.0)
-                .unwrap();
+            let m = Mlm::new(
+                &[[0.0, 0.0], [0.5, 0.5 * b.tan()]],
+                &t,
+                &vec![5.0; t.len()],
+                1000.0,
+            )
+            .unwrap();
             let st = *m.history().states.last().unwrap();
             let cp = m.corrected_peak(&st).1 / (0.5 * 1000.0 * 25.0);
             let e = cp / x.cp_max - 1.0;
-            eprintln!("{} deg: corrected MLM {cp:.4}, similarity {:.4} ({e:+.4})", x.deadrise_deg, x.cp_max);
-            assert!(e.abs() < STATED_ERROR, "{} deg: {cp} vs {} ({e})", x.deadrise_deg, x.cp_max);
+            eprintln!(
+                "{} deg: corrected MLM {cp:.4}, similarity {:.4} ({e:+.4})",
+                x.deadrise_deg, x.cp_max
+            );
+            assert!(
+                e.abs() < STATED_ERROR,
+                "{} deg: {cp} vs {} ({e})",
+                x.deadrise_deg,
+                x.cp_max
+            );
         }
     }
 

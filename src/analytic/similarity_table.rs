@@ -59,7 +59,9 @@ use std::sync::OnceLock;
 use crate::numerics::pchip::Pchip;
 
 /// Deadrise angles of the table (deg).
-pub const DEADRISE_DEG: [f64; 11] = [5.0, 10.0, 15.0, 20.0, 25.0, 30.0, 35.0, 40.0, 45.0, 50.0, 55.0];
+pub const DEADRISE_DEG: [f64; 11] = [
+    5.0, 10.0, 15.0, 20.0, 25.0, 30.0, 35.0, 40.0, 45.0, 50.0, 55.0,
+];
 
 /// Similarity Cp_max at [`DEADRISE_DEG`] (`slamtool similarity --table`, default grid, run at commit
 /// 56903a4; from 45 deg up the maximum is at the keel).
@@ -68,9 +70,11 @@ pub const CP_MAX: [f64; 11] = [
 ];
 
 /// The stated error of the corrected MLM wedge peak against the similarity Cp_max, 5-55 deg (a
-/// fraction): the interpolation error of this table plus the MLM's peak search, measured at the
-/// half-way angles in `measure_corrected_mlm_against_similarity`.
-pub const STATED_ERROR: f64 = 0.01;
+/// fraction): the interpolation error of this table plus the MLM's peak search. Measured against fresh
+/// solves half-way between the nodes: -0.03 % at 12.5 deg, 0.00 % at 27.5 deg, +1.9 % at 42.5 deg (the
+/// similarity maximum moves from the spray root to the keel between 40 and 45 deg, a kink in Cp_max
+/// that the interpolation rounds off); at the nodes within 0.5 % (the peak search). Stated as 2.5 %.
+pub const STATED_ERROR: f64 = 0.025;
 
 /// Largest local deadrise with a tabulated value (deg).
 pub const MAX_DEG: f64 = 55.0;
@@ -171,8 +175,13 @@ mod tests {
             };
             let b = d.to_radians();
             let t: Vec<f64> = (0..=20).map(|k| k as f64 * 1e-4).collect();
-            let m = Mlm::new(&[[0.0, 0.0], [0.5, 0.5 * b.tan()]], &t, &vec![5.0; t.len()], 1000.0)
-                .unwrap();
+            let m = Mlm::new(
+                &[[0.0, 0.0], [0.5, 0.5 * b.tan()]],
+                &t,
+                &vec![5.0; t.len()],
+                1000.0,
+            )
+            .unwrap();
             let st = *m.history().states.last().unwrap();
             eprintln!(
                 "{d:>5}: sim {:.4} table {:.4} ({:+.4}); MLM closed {:.4} search {:.4}; ratio MLM {:.3} GWM {:.3} \
@@ -214,7 +223,10 @@ mod tests {
                     d,
                     v,
                     1000.0,
-                    SensorSpan { s_m: 0.5 * (p.0 + p.1), width_m: width },
+                    SensorSpan {
+                        s_m: 0.5 * (p.0 + p.1),
+                        width_m: width,
+                    },
                     t_end,
                     Some(fc),
                 )

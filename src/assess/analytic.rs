@@ -46,8 +46,9 @@ pub fn correction_note() -> String {
         "analytic sensor pressures: modified Logvinovich model (Korobkin 2004) with the wedge-equivalent \
          correction (each instant scaled by the similarity solution's wedge peak over the model's own, \
          at the local deadrise of the contact point; analytic::similarity_table). For a wedge at \
-         constant speed its peak is within {:.0} % of the nonlinear similarity solution from 5 to 55 deg \
-         (uncorrected: 3 % high at 10 deg, 18 % at 20, 40 % at 30, 71 % at 40 deg); its force is not \
+         constant speed its peak is within {:.1} % of the nonlinear similarity solution from 5 to 55 deg \
+         (uncorrected: 5 % high at 10 deg, 18 % at 20, 40 % at 30, 71 % at 40, 75 % at 55 deg); its force \
+         is not \
          corrected. On other sections and at varying speed it assumes local-wedge equivalence at the \
          contact point and constant speed, and its error there is not measured against an exact solution",
         100.0 * crate::analytic::similarity_table::STATED_ERROR
@@ -230,7 +231,12 @@ pub fn estimate_in(case: &EntryCase, rho: f64) -> Result<Estimate> {
     let corrections = mlm.corrections();
     let histories: Vec<Vec<f64>> = raw_histories
         .iter()
-        .map(|h| h.iter().zip(&corrections).map(|(p, c)| p * c.factor).collect())
+        .map(|h| {
+            h.iter()
+                .zip(&corrections)
+                .map(|(p, c)| p * c.factor)
+                .collect()
+        })
         .collect();
     notes.push(correction_note());
     if corrections.iter().any(|c| c.above_table) {

@@ -44,7 +44,10 @@ pub fn like_for_like(
         beta.to_degrees(),
         v,
         WATER_DENSITY,
-        SensorSpan { s_m: s, width_m: width },
+        SensorSpan {
+            s_m: s,
+            width_m: width,
+        },
         t_end,
         Some(cutoff),
     )?;

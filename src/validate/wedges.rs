@@ -8,12 +8,12 @@ use std::sync::Arc;
 
 use super::conditions::WATER_DENSITY;
 use super::run::Memo;
-use super::{Case, Figure, Mode, Outcome, Reference, Series, Table};
 pub use super::wedge_bounds::mlm_force_coefficient;
+pub(super) use super::wedge_references::filtered_peak;
 pub use super::wedge_references::{
     like_for_like, like_for_like_cp, reference_peak_time, wagner_like_for_like_cp,
 };
-pub(super) use super::wedge_references::filtered_peak;
+use super::{Case, Figure, Mode, Outcome, Reference, Series, Table};
 use crate::error::{Error, Result};
 use crate::sph::{
     self, MotionSpec, Overrides, RunOptions, SensorMethod, SensorSpec, body::Section,
