@@ -33,7 +33,7 @@
 mod common;
 
 use common::sph::{WedgeRun, wedge_run};
-use slamtool::analytic::{wagner, zhao_faltinsen1993};
+use slamtool::analytic::{similarity_table, zhao_faltinsen1993};
 use slamtool::loads::peaks::summarise;
 use slamtool::sph::SensorMethod;
 
@@ -51,16 +51,17 @@ fn filtered_peak(t: &[f64], x: &[f64]) -> (f64, f64) {
 
 /// Like-for-like reference peak pressure coefficient of a sensor (centre `s`, width `width` along the
 /// side) on a wedge at constant speed `v`, over [0, t_end], filtered like the SPH history: the function
-/// the validation cases use (`slamtool::validate::wedges::like_for_like_cp`, documented there: Wagner's
-/// composite distribution at 30 deg, the Zhao & Faltinsen similarity peak at 20 deg).
+/// the validation cases use (`slamtool::validate::wedges::like_for_like_cp`: the similarity solution
+/// averaged over the sensor's span and filtered; before issue 28 it was Wagner's composite distribution
+/// at 30 deg and the Zhao & Faltinsen peak scaled by Wagner's span loss at 20 deg).
 fn like_for_like_cp(beta: f64, v: f64, s: f64, width: f64, t_end: f64) -> f64 {
     slamtool::validate::wedges::like_for_like_cp(beta, v, s, width, t_end, CUTOFF_HZ).unwrap()
 }
 
-/// Peak errors of one run: mean over its sensors of |Cp / Cp_ref - 1| against the point reference (Wagner
-/// (pi^2/4) cot^2(beta) at 30 deg, 17.77 at 20 deg) and against the like-for-like reference, and the mean
-/// |t / t_ref - 1| of the time of the peak against the time the reference peak passes the sensor centre
-/// (Wagner: at height (pi/2) V t above the keel; similarity: 1.5087 V t).
+/// Peak errors of one run: mean over its sensors of |Cp / Cp_ref - 1| against the point reference (the
+/// similarity Cp_max, `similarity_table::cp_max`) and against the like-for-like reference, and the mean
+/// |t / t_ref - 1| of the time of the peak against the time the similarity peak passes the sensor
+/// centre (`wedges::reference_peak_time`).
 struct PeakErrors {
     point: f64,
     like: f64,
@@ -72,12 +73,7 @@ fn peak_errors(deadrise_deg: f64, n_half: f64, method: SensorMethod) -> PeakErro
     let run: WedgeRun = wedge_run(deadrise_deg, 5.0, n_half, SENSORS, t_frac, method);
     let beta = run.beta;
     let t_end = run.result.summary.setup.t_end;
-    let similarity = deadrise_deg == zhao_faltinsen1993::DEADRISE_DEG;
-    let cp_point = if similarity {
-        zhao_faltinsen1993::CP_MAX
-    } else {
-        wagner::peak_pressure_coefficient(beta).unwrap()
-    };
+    let cp_point = similarity_table::cp_max(deadrise_deg).unwrap();
     let h = &run.result.history;
     let sens = &run.result.summary.setup.sensors;
     let q = 0.5 * 1000.0 * run.speed * run.speed;

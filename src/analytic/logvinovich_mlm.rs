@@ -330,6 +330,9 @@ impl Mlm {
 #[path = "mlm_panels.rs"]
 mod panels;
 
+#[path = "mlm_correction.rs"]
+mod correction;
+
 #[cfg(test)]
 #[path = "logvinovich_mlm_tests.rs"]
 mod tests;

@@ -353,7 +353,8 @@ mod tests {
     }
 
     /// Towards Wagner's (pi^2/4) cot^2 beta as the deadrise falls: the ratio rises towards 1 from 20 to
-    /// 10 to 5 deg (measured 0.951, 0.978, 0.991).
+    /// 10 to 5 deg (measured 0.951, 0.978, 0.991). The same solves check the copy of the solver's
+    /// Cp_max in [`crate::analytic::similarity_table`] (printed to 4 decimals: within 1e-4 relative).
     #[test]
     fn cp_max_tends_to_wagner_as_the_deadrise_falls() {
         let rows = table(&[5.0, 10.0, 20.0], &DEFAULT_GRID);
@@ -361,6 +362,13 @@ mod tests {
             .iter()
             .map(|r| {
                 let s = r.solution.as_ref().unwrap();
+                let copy = crate::analytic::similarity_table::cp_max(r.deadrise_deg).unwrap();
+                assert!(
+                    (copy / s.cp_max - 1.0).abs() < 1e-4,
+                    "{}: {copy} vs {}",
+                    r.deadrise_deg,
+                    s.cp_max
+                );
                 s.cp_max / wagner_cp_max(r.deadrise_deg)
             })
             .collect();
@@ -368,11 +376,15 @@ mod tests {
         assert!(ratio[0] < 1.0 && ratio[0] > 0.98, "{ratio:?}");
     }
 
-    /// The table over 10 to 40 deg: finite, Cp_max and the force falling with the deadrise, the
-    /// maximum's height falling too.
+    /// Half-way between the table's nodes (12.5, 27.5, 42.5 deg): finite, Cp_max and the force falling
+    /// with the deadrise, the maximum's height falling too; and the corrected modified Logvinovich peak
+    /// of a constant-speed wedge (`Mlm::corrected_peak`, interpolated in the table) within the stated
+    /// error [`crate::analytic::similarity_table::STATED_ERROR`] of these fresh solutions.
     #[test]
-    fn table_is_finite_and_monotone() {
-        let rows = table(&[10.0, 25.0, 40.0], &DEFAULT_GRID);
+    fn table_is_finite_and_monotone_and_the_corrected_mlm_peak_is_within_the_stated_error() {
+        use crate::analytic::logvinovich_mlm::Mlm;
+        use crate::analytic::similarity_table::STATED_ERROR;
+        let rows = table(&[12.5, 27.5, 42.5], &DEFAULT_GRID);
         let s: Vec<&Similarity> = rows.iter().map(|r| r.solution.as_ref().unwrap()).collect();
         for w in s.windows(2) {
             assert!(w[1].cp_max < w[0].cp_max && w[1].force < w[0].force);
@@ -383,6 +395,28 @@ mod tests {
                 x.pressure
                     .iter()
                     .all(|p| p[0].is_finite() && p[1].is_finite())
+            );
+            let b = x.deadrise_deg.to_radians();
+            let t: Vec<f64> = (0..=20).map(|k| k as f64 * 1e-4).collect();
+            let m = Mlm::new(
+                &[[0.0, 0.0], [0.5, 0.5 * b.tan()]],
+                &t,
+                &vec![5.0; t.len()],
+                1000.0,
+            )
+            .unwrap();
+            let st = *m.history().states.last().unwrap();
+            let cp = m.corrected_peak(&st).1 / (0.5 * 1000.0 * 25.0);
+            let e = cp / x.cp_max - 1.0;
+            eprintln!(
+                "{} deg: corrected MLM {cp:.4}, similarity {:.4} ({e:+.4})",
+                x.deadrise_deg, x.cp_max
+            );
+            assert!(
+                e.abs() < STATED_ERROR,
+                "{} deg: {cp} vs {} ({e})",
+                x.deadrise_deg,
+                x.cp_max
             );
         }
     }

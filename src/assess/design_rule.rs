@@ -22,11 +22,13 @@
 //!   design = A (source `analytic (dry in SPH)`);
 //! * no SPH run: design = A (source `analytic`).
 //!
-//! Why this rule: the analytic models (MLM, Wagner) over-predict rather than under-predict the nonlinear
-//! wedge pressure at moderate deadrise (the MLM peak is 18 % above the similarity solution's maximum at
-//! 20 deg), so where SPH has not shown that it resolves a peak, the analytic value is the conservative
-//! one; where SPH has shown it, its own uncertainty band is added, so that the design value is an upper
-//! estimate of the converged value either way.
+//! Why this rule: the analytic sensor pressure is the modified Logvinovich model corrected to the
+//! nonlinear similarity solution of the local wedge (within the stated error of
+//! [`crate::analytic::similarity_table::STATED_ERROR`] for a wedge at constant speed; the uncorrected
+//! MLM peak is 18 % above the similarity maximum at 20 deg and 71 % at 40 deg), an estimate of the
+//! converged value rather than a bound; where SPH has not shown that it resolves a peak the larger of the
+//! two is taken, and where SPH has shown it, its own uncertainty band is added, so that the design value
+//! is an upper estimate of the converged value either way.
 
 use serde::{Deserialize, Serialize};
 

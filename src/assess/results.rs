@@ -768,6 +768,7 @@ mod tests {
                     peak_time_s: 0.02,
                     impulse_pa_s: 2.0,
                     acoustic_bound_pa: None,
+                    uncorrected_peak_pa: None,
                 })
                 .collect(),
             notes: Vec::new(),

@@ -23,6 +23,8 @@ pub mod report;
 pub mod run;
 pub mod seakeeping;
 pub mod ships;
+pub mod wedge_bounds;
+pub mod wedge_references;
 pub mod wedges;
 
 use std::time::Instant;

@@ -6,7 +6,7 @@ use std::sync::{Arc, Mutex};
 
 use super::{
     Case, Mode, Outcome, drops, entry_velocities, hermundstad_forcing, ochi_trends, quoted, seakeeping,
-    ships, wedges,
+    ships, wedge_bounds, wedges,
 };
 use crate::error::{Error, Result};
 use crate::sph;
@@ -112,8 +112,8 @@ pub fn run(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcome> {
     match case.kind.as_str() {
         "wedge-similarity" => wedges::similarity(case, mode, memo),
         "wedge-convergence" => wedges::convergence(case, mode, memo),
-        "wedge-force-bounds" => wedges::force_bounds(case, mode, memo),
-        "wedge-pressure-bound" => wedges::pressure_bound(case, mode, memo),
+        "wedge-force-bounds" => wedge_bounds::force_bounds(case, mode, memo),
+        "wedge-pressure-bound" => wedge_bounds::pressure_bound(case, mode, memo),
         "breder2005-load-ratio" => quoted::breder_load_ratio(case, mode, memo),
         "whelan2004-peak-pressure" => quoted::whelan_peak_pressure(case),
         "zhao1996-prescribed" => drops::zhao_prescribed(case, mode, memo),
