@@ -124,9 +124,13 @@ pub fn similarity_sensor_reference(
     cutoff_hz: Option<f64>,
 ) -> Result<SensorReference> {
     let finite_pos = |x: f64| x.is_finite() && x > 0.0;
-    if !(finite_pos(speed) && finite_pos(rho) && finite_pos(t_end) && span.s_m.is_finite())
-        || !(span.width_m.is_finite() && span.width_m >= 0.0)
-    {
+    let valid = finite_pos(speed)
+        && finite_pos(rho)
+        && finite_pos(t_end)
+        && span.s_m.is_finite()
+        && span.width_m.is_finite()
+        && span.width_m >= 0.0;
+    if !valid {
         return Err(Error::Invalid(format!(
             "similarity sensor reference: speed {speed}, density {rho}, t_end {t_end} must be positive and \
              the sensor span (centre {}, width {}) finite",

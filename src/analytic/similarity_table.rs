@@ -116,7 +116,7 @@ pub struct PeakCorrection {
 /// K(beta) of the module notes; beta in radians, below 0 (a hollow) or 0 taken as no correction.
 pub fn peak_correction(beta: f64) -> PeakCorrection {
     let deg = beta.to_degrees();
-    if !(deg > 0.0) {
+    if deg.is_nan() || deg <= 0.0 {
         return PeakCorrection {
             factor: 1.0,
             above_table: false,

@@ -29,8 +29,7 @@ Examples:
 const SECTION_EXAMPLES: &str = "\
 Examples:
   slamtool entry section hulls/ochi-vform.toml --station 0.1 --speed 2.0 -o out/ochi-st0.1
-  slamtool entry section hulls/car-carrier-hm2005.toml --station 0.05 --speed 3 --resolution medium
-  slamtool entry section hulls/ochi-vform.toml --x-m 2.4 --speed 1.5 --json
+  slamtool entry section hulls/ochi-vform.toml --x-m 2.4 --speed 1.5 --keel-stages --json
   slamtool entry section hulls/car-carrier-hm2005.toml --station 0.05 \\
       --forcing data/forcing/hermundstad2005-flare-reconstructed.csv --t-end 0.4";
 

@@ -14,7 +14,9 @@
 //! c_i (Wagner's condition along the run's own velocity history), the stages are built greedily:
 //!
 //! * the sensors staged are those crossed inside the main run's contact transient and those with
-//!   fewer than [`STAGE_BELOW`] particles across their crossing half-width;
+//!   fewer than [`STAGE_BELOW`] particles across their crossing half-width (both numbers, N and this,
+//!   are for the default level of 40 particles per half-breadth, and scale with the main run's level:
+//!   a quick run at 10 particles per half-breadth stages below 2.5 particles across, at 5);
 //! * a stage starts at the smallest remaining c_min and covers every sensor with c_i <= R c_min
 //!   ([`STAGE_SPAN`]);
 //! * its spacing is dp_s = c_min / N ([`PARTICLES_ACROSS_RESOLVED`]), so every sensor it covers has at
@@ -60,6 +62,11 @@ pub const PARTICLES_ACROSS_RESOLVED: f64 = 20.0;
 /// about 8 (one stage of 84,000 particles for two mid-side sensors), against a single stage of the
 /// keel sensors with this rule.
 pub const STAGE_BELOW: f64 = 10.0;
+
+/// Particles per half-breadth of the resolution level at which [`PARTICLES_ACROSS_RESOLVED`] and
+/// [`STAGE_BELOW`] apply as they stand (the default, [`crate::sph::Level::Coarse`]); a main run at n
+/// particles per half-breadth scales both by n / 40.
+pub const REFERENCE_PARTICLES_PER_HALF_BEAM: f64 = 40.0;
 
 /// Ratio R of the largest to the smallest crossing half-width of the sensors of one stage.
 pub const STAGE_SPAN: f64 = 2.0;
@@ -156,6 +163,11 @@ pub fn plan(summary: &RunSummary, study: StudyPlan) -> (Vec<StagePlan>, Vec<(Str
     let Ok(section) = Section::from_half_points(points.clone()) else {
         return (Vec::new(), kept);
     };
+    // the requested resolution sets the stages' too: at the default level (40 particles per
+    // half-breadth) a stage gives N particles across; a coarser or finer main run scales N and the
+    // staging threshold with it, so that a quick run stays quick
+    let scale = section.half_breadth() / summary.dp_m / REFERENCE_PARTICLES_PER_HALF_BEAM;
+    let (target, below) = (PARTICLES_ACROSS_RESOLVED * scale, STAGE_BELOW * scale);
     let mut waiting: Vec<Waiting> = summary
         .sensors
         .iter()
@@ -164,7 +176,7 @@ pub fn plan(summary: &RunSummary, study: StudyPlan) -> (Vec<StagePlan>, Vec<(Str
             let c = a.crossing_half_width_m?;
             let under = match a.status {
                 ImpactStatus::InTransient => true,
-                ImpactStatus::Resolved => c / summary.dp_m < STAGE_BELOW,
+                ImpactStatus::Resolved => c / summary.dp_m < below,
                 _ => false,
             };
             (under && c > 0.0).then(|| Waiting {
@@ -199,7 +211,7 @@ pub fn plan(summary: &RunSummary, study: StudyPlan) -> (Vec<StagePlan>, Vec<(Str
         k += group.len();
         let names: Vec<String> = group.iter().map(|w| w.name.clone()).collect();
         let c_max = group.last().map_or(c_min, |w| w.crossing);
-        let dp_s = c_min / PARTICLES_ACROSS_RESOLVED;
+        let dp_s = c_min / target;
         let leave = |kept: &mut Vec<(String, String)>, why: String| {
             kept.extend(names.iter().map(|n| (n.clone(), why.clone())));
         };

@@ -62,6 +62,8 @@ struct RawCase {
     reference_files: Vec<Spanned<String>>,
     provenance: Spanned<String>,
     known_failure: Option<Spanned<String>>,
+    /// The modes the known-failure mark applies in ("quick", "full"); all when absent.
+    known_failure_modes: Option<Vec<Spanned<String>>>,
     #[serde(default)]
     notes: Vec<String>,
     tolerance: RawTolerance,
@@ -121,6 +123,9 @@ pub struct Case {
     pub reference_files: Vec<PathBuf>,
     pub provenance: String,
     pub known_failure: Option<String>,
+    /// The modes `known_failure` applies in (both when the case file does not restrict it): a case
+    /// can be expected to fail at the quick level only, where its resolution is too coarse.
+    pub known_failure_modes: Vec<Mode>,
     pub notes: Vec<String>,
     pub tolerance: Tolerance,
     pub tolerance_reason: String,
@@ -267,6 +272,31 @@ impl Case {
             }
             None => None,
         };
+        let known_failure_modes = match &raw.known_failure_modes {
+            None => vec![Mode::Quick, Mode::Full],
+            Some(list) => {
+                if known_failure.is_none() {
+                    return Err(Error::Input(src.error(
+                        &list[0],
+                        "known_failure_modes without a known_failure text".to_string(),
+                    )));
+                }
+                let mut modes = Vec::new();
+                for m in list {
+                    modes.push(match m.get_ref().as_str() {
+                        "quick" => Mode::Quick,
+                        "full" => Mode::Full,
+                        other => {
+                            return Err(Error::Input(src.error(
+                                m,
+                                format!("unknown mode '{other}': use \"quick\" or \"full\""),
+                            )));
+                        }
+                    });
+                }
+                modes
+            }
+        };
         Ok(Case {
             name,
             title: non_empty(&src, &raw.title, "title")?,
@@ -276,6 +306,7 @@ impl Case {
             reference_files,
             provenance: non_empty(&src, &raw.provenance, "provenance")?,
             known_failure,
+            known_failure_modes,
             notes: raw.notes,
             tolerance,
             tolerance_reason,
@@ -398,6 +429,13 @@ impl Case {
     }
 
     /// Particles over the half-beam for the mode.
+    /// The case's known-failure text when its mark applies in `mode`.
+    pub fn known_failure_in(&self, mode: Mode) -> Option<&String> {
+        self.known_failure
+            .as_ref()
+            .filter(|_| self.known_failure_modes.contains(&mode))
+    }
+
     pub fn particles(&self, mode: Mode) -> Result<f64> {
         match (self.resolution, mode) {
             (Some((q, _)), Mode::Quick) => Ok(q),

@@ -157,15 +157,16 @@ pub fn run_case(case: &Case, mode: Mode, memo: &run::Memo) -> CaseResult {
             .replace("\\", "/")
     };
     let mut notes = case.notes.clone();
-    let mut known_failure = case.known_failure.as_ref().map(|_| {
+    let marked = case.known_failure_in(mode);
+    let mut known_failure = marked.map(|_| {
         "(the known-failure text quotes the run's numbers: the computation failed)".into()
     });
     let (computed, reference, error, mut verdict, table, figures) = match outcome {
         Ok(o) => {
             notes.extend(o.notes);
             let (error, within) = compare::assess(o.computed, &o.reference, case.tolerance);
-            let mut v = compare::verdict(within, case.known_failure.is_some());
-            if let Some(template) = &case.known_failure {
+            let mut v = compare::verdict(within, marked.is_some());
+            if let Some(template) = marked {
                 match known::text(template, &o.facts, o.computed, &o.reference, error, case, v) {
                     Ok(t) => known_failure = Some(t),
                     Err(e) => {

@@ -5,8 +5,8 @@ use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
 
 use super::{
-    Case, Mode, Outcome, drops, entry_velocities, hermundstad_forcing, ochi_trends, quoted, seakeeping,
-    ships, wedge_bounds, wedges,
+    Case, Mode, Outcome, drops, entry_velocities, hermundstad_forcing, ochi_trends, quoted,
+    seakeeping, ships, wedge_bounds, wedges,
 };
 use crate::error::{Error, Result};
 use crate::sph;
