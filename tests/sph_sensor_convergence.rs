@@ -33,7 +33,7 @@
 mod common;
 
 use common::sph::{WedgeRun, wedge_run};
-use slamtool::analytic::{similarity_table, zhao_faltinsen1993};
+use slamtool::analytic::{similarity_table, wagner, zhao_faltinsen1993};
 use slamtool::loads::peaks::summarise;
 use slamtool::sph::SensorMethod;
 
@@ -73,7 +73,16 @@ fn peak_errors(deadrise_deg: f64, n_half: f64, method: SensorMethod) -> PeakErro
     let run: WedgeRun = wedge_run(deadrise_deg, 5.0, n_half, SENSORS, t_frac, method);
     let beta = run.beta;
     let t_end = run.result.summary.setup.t_end;
-    let cp_point = similarity_table::cp_max(deadrise_deg).unwrap();
+    // 30 deg keeps the reference its assertions were stated with, Wagner's composite distribution (peak
+    // at height (pi/2) V t); 20 deg compares with the similarity solution. Against the similarity
+    // solution at 30 deg the force-panel error rises from 8.3 % (15 particles) to 13.6 % (40): the
+    // sensors overshoot it at 40 particles (issue 28, item 4, measured when the reference changed).
+    let wagner_ref = deadrise_deg != zhao_faltinsen1993::DEADRISE_DEG;
+    let cp_point = if wagner_ref {
+        wagner::peak_pressure_coefficient(beta).unwrap()
+    } else {
+        similarity_table::cp_max(deadrise_deg).unwrap()
+    };
     let h = &run.result.history;
     let sens = &run.result.summary.setup.sensors;
     let q = 0.5 * 1000.0 * run.speed * run.speed;
@@ -86,8 +95,20 @@ fn peak_errors(deadrise_deg: f64, n_half: f64, method: SensorMethod) -> PeakErro
     for (col, s) in h.sensors.iter().zip(sens) {
         let (p, t) = filtered_peak(&h.t, col);
         let cp = p / q;
-        let cp_like = like_for_like_cp(beta, run.speed, s.s_m, s.width_m, t_end);
-        let t_ref = slamtool::validate::wedges::reference_peak_time(beta, run.speed, s.s_m);
+        let (cp_like, t_ref) = if wagner_ref {
+            (
+                slamtool::validate::wedge_references::wagner_like_for_like_cp(
+                    beta, run.speed, s.s_m, s.width_m, t_end, CUTOFF_HZ,
+                )
+                .unwrap(),
+                s.s_m * beta.sin() / (std::f64::consts::FRAC_PI_2 * run.speed),
+            )
+        } else {
+            (
+                like_for_like_cp(beta, run.speed, s.s_m, s.width_m, t_end),
+                slamtool::validate::wedges::reference_peak_time(beta, run.speed, s.s_m),
+            )
+        };
         eprintln!(
             "  {deadrise_deg} deg, {n_half} particles, {method:?}, sensor at s = {:.3} m: Cp {cp:.2} at {:.2} ms; \
              reference {cp_point:.2} (like for like {cp_like:.2}) at {:.2} ms",
