@@ -330,16 +330,14 @@ fn entry_definitions(
     let mut targets = Vec::new();
     for &u in speeds {
         for &f in at {
-            targets.push(Target {
-                label: format!("{f} Lpp, {u} m/s"),
+            targets.push(Target::keel_entry(
+                format!("{f} Lpp, {u} m/s"),
                 hull,
                 loading,
                 wave,
-                speed: u,
-                aft_of_fp: f,
-                height_above_keel: 0.0,
-                fixed_wave: false,
-            });
+                u,
+                f,
+            ));
         }
     }
     let rows = defs::table(&targets, &defs::standard_variants(loading))?;

@@ -53,6 +53,30 @@ pub struct Target<'a> {
     pub fixed_wave: bool,
 }
 
+impl<'a> Target<'a> {
+    /// The keel entry at station `aft_of_fp` (fraction of Lpp aft of the FP) at `speed`, in the
+    /// sea file's wave varied with the table's definitions.
+    pub fn keel_entry(
+        label: String,
+        hull: &'a Hull,
+        loading: &'a LoadingCondition,
+        wave: &'a RegularWave,
+        speed: f64,
+        aft_of_fp: f64,
+    ) -> Self {
+        Self {
+            label,
+            hull,
+            loading,
+            wave,
+            speed,
+            aft_of_fp,
+            height_above_keel: 0.0,
+            fixed_wave: false,
+        }
+    }
+}
+
 /// The chain with one or more definitions changed; `Variant::default()` is the bundled chain.
 #[derive(Debug, Clone, Default)]
 pub struct Variant {

@@ -59,16 +59,14 @@ pub fn ochi_entry_velocities(case: &Case) -> Result<Outcome> {
         ("p3_station_aft_of_fp", "P3"),
     ] {
         let f = num(key)?;
-        targets.push(Target {
-            label: format!("Ochi {label} {f} Lpp keel entry"),
-            hull: &hull,
+        targets.push(Target::keel_entry(
+            format!("Ochi {label} {f} Lpp keel entry"),
+            &hull,
             loading,
             wave,
-            speed: u,
-            aft_of_fp: f,
-            height_above_keel: 0.0,
-            fixed_wave: false,
-        });
+            u,
+            f,
+        ));
     }
     targets.push(Target {
         label: format!(
