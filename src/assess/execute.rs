@@ -220,7 +220,8 @@ impl Cost {
     pub fn describe(&self) -> String {
         format!(
             "{} SPH run(s) to make ({} already in the cache): {:.2e} particle-steps with the convergence \
-             companions, estimated wall time {} on {} thread(s)",
+             companions, estimated wall time {} on {} thread(s), not counting the keel stages a run may add \
+             once it has shown which sensors it leaves unresolved",
             self.runs,
             self.cached,
             self.particle_steps,
