@@ -103,6 +103,13 @@ fn study(deg: f64, n_half: f64, method: SensorMethod, divergence_correction: boo
             // `CONV_CFL` for another Courant number.
             riemann: std::env::var("CONV_RIEMANN").ok().map(|v| v != "0"),
             cfl: std::env::var("CONV_CFL").ok().map(|v| v.parse().unwrap()),
+            // `CONV_SHIFTING=1`: particle shifting with free-surface treatment (uniform tank).
+            shifting: std::env::var("CONV_SHIFTING").ok().map(|v| v == "1"),
+            // `CONV_UNIFORM=1`: one spacing throughout the tank instead of the refined band.
+            refinement: std::env::var("CONV_UNIFORM")
+                .ok()
+                .filter(|v| v == "1")
+                .map(|_| false),
             ..Default::default()
         },
     )
