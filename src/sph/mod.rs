@@ -12,6 +12,7 @@ pub mod body_force;
 pub mod boundary;
 pub mod case;
 pub mod case_file;
+pub mod continuity_pass;
 pub mod cost;
 pub mod counters;
 pub mod damping_zone;

@@ -98,3 +98,15 @@ pub struct Terms {
     pub b: [f64; BATCH],
     pub c: [f64; BATCH],
 }
+
+/// Whether the CPU runs AVX2 (then the pair loops are compiled for it: 4 lanes a vector instead of 2).
+pub fn has_avx2() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    {
+        std::is_x86_feature_detected!("avx2")
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        false
+    }
+}

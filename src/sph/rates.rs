@@ -1,6 +1,6 @@
 //! The two passes over the neighbour lists that give the time derivatives of the fluid particles: the
-//! momentum pass (with the neighbour search that fills the lists) and the continuity pass (which reuses
-//! them). The equations are stated in [`crate::sph::solver`]. Every sum is a gather over the neighbours
+//! momentum pass (with the neighbour search that fills the lists; here) and the continuity pass (which
+//! reuses them; [`crate::sph::continuity_pass`]). The equations are stated in [`crate::sph::solver`]. Every sum is a gather over the neighbours
 //! of one particle in the fixed cell-sorted order, so the results are bit-identical on any number of
 //! threads.
 //!
@@ -12,83 +12,15 @@
 use rayon::prelude::*;
 
 use crate::sph::case::Setup;
+pub use crate::sph::continuity_pass::continuity_rates;
 use crate::sph::diffusion::antuono2010;
 use crate::sph::kernel::WendlandC2;
-use crate::sph::kernel_correction;
 use crate::sph::neighbour_lists::{ChunkLists, LIST_CHUNK, NeighbourLists, PairKernel};
 use crate::sph::neighbours::Grid;
-use crate::sph::pair_batch::{BATCH, Gathered, Terms};
+use crate::sph::pair_batch::{BATCH, Gathered, Terms, has_avx2};
 use crate::sph::particles::{Kind, Particles, View};
 use crate::sph::refinement::PairKernels;
 use crate::sph::riemann;
-
-/// Density rate of every fluid particle (continuity with delta-SPH diffusion) into `rate[i][2]`, over the
-/// neighbour lists of the last momentum pass (which must have run at the current positions and storage
-/// order; only the velocities have changed since).
-pub fn continuity_rates(
-    lists: &NeighbourLists,
-    pt: &mut Particles,
-    kernel: &WendlandC2,
-    s: &Setup,
-) {
-    if pt.multi_resolution() {
-        assert!(s.riemann && !s.divergence_correction);
-        return continuity_pass::<true, false, true>(lists, pt, kernel, s);
-    }
-    match (s.riemann, s.divergence_correction) {
-        (true, false) => continuity_pass::<true, false, false>(lists, pt, kernel, s),
-        (false, false) => continuity_pass::<false, false, false>(lists, pt, kernel, s),
-        (true, true) => continuity_pass::<true, true, false>(lists, pt, kernel, s),
-        (false, true) => continuity_pass::<false, true, false>(lists, pt, kernel, s),
-    }
-}
-
-/// [`continuity_rates`] with the Riemann dissipation (else the delta-SPH diffusion), with the
-/// kernel-gradient-corrected divergence ([`kernel_correction`]) or without, and with two resolutions,
-/// compiled separately so that the pair loop carries no test of the scheme. Distances and kernel factors
-/// are recomputed from the positions as in the momentum pass ([`crate::sph::neighbour_lists`]).
-fn continuity_pass<const RIEMANN: bool, const CORRECTED: bool, const MULTI: bool>(
-    lists: &NeighbourLists,
-    pt: &mut Particles,
-    kernel: &WendlandC2,
-    s: &Setup,
-) {
-    let delta_term = s.delta * kernel.h() * s.c0;
-    let (c0, rho0_g) = (s.c0, s.rho0 * s.g);
-    let kernel = *kernel;
-    let pairs = PairKernels::new(kernel.h());
-    let avx2 = has_avx2();
-    let mut out = std::mem::take(&mut pt.rate);
-    {
-        let grad_rho = &pt.grad_rho[..pt.len()];
-        let level = &pt.level[..];
-        let pt = pt.view();
-        out.par_chunks_mut(LIST_CHUNK)
-            .zip(lists.chunks.par_iter())
-            .enumerate()
-            .for_each(|(c, (out, list))| {
-                let ctx = ContinuityChunk {
-                    c,
-                    pt,
-                    grad_rho,
-                    level,
-                    kernel,
-                    pairs,
-                    delta_term,
-                    c0,
-                    rho0_g,
-                };
-                #[cfg(target_arch = "x86_64")]
-                if avx2 {
-                    // SAFETY: the CPU has AVX2 (checked at run time above).
-                    unsafe { continuity_chunk_avx2::<RIEMANN, CORRECTED, MULTI>(&ctx, out, list) };
-                    return;
-                }
-                continuity_chunk::<RIEMANN, CORRECTED, MULTI>(&ctx, out, list);
-            });
-    }
-    pt.rate = out;
-}
 
 /// Acceleration of every fluid particle into `rate[i][0..2]` and its renormalised density gradient (zero
 /// when neither the delta-SPH diffusion nor shifting uses it) into `grad_rho[i]`, with one neighbour
@@ -202,18 +134,6 @@ struct MomentumChunk<'a> {
     g: f64,
 }
 
-/// Whether the CPU runs AVX2 (then the pair loops are compiled for it: 4 lanes a vector instead of 2).
-fn has_avx2() -> bool {
-    #[cfg(target_arch = "x86_64")]
-    {
-        std::is_x86_feature_detected!("avx2")
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    {
-        false
-    }
-}
-
 /// [`momentum_chunk`] compiled with AVX2.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
@@ -251,215 +171,88 @@ fn momentum_chunk<const RIEMANN: bool, const GRAD: bool, const VISCOUS: bool, co
         eps2,
         g,
     } = *ctx;
-        list.clear();
-        let mut count = 0u64;
-        let mut b = Gathered::default();
-        let mut t = Terms::default();
-        for (k, (out, grad)) in out.iter_mut().zip(grad.iter_mut()).enumerate() {
-            let i = c * LIST_CHUNK + k;
-            if pt.kind[i] != Kind::Fluid {
-                out[0] = 0.0;
-                out[1] = 0.0;
-                *grad = [0.0; 2];
-                list.end_particle();
-                continue;
-            }
-            let (yi, zi, vyi, vzi) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i]);
-            let (rho_i, p_i) = (pt.rho[i], pt.p[i]);
-            // Search first (the candidates into the list), then the batched pair loop
-            // ([`crate::sph::pair_batch`]), which also flags the fluid neighbours in the list.
-            let li = if MULTI { level[i] } else { 0 };
-            if MULTI {
-                let reach = grid.reach(li, yi, zi);
-                let support2 = pairs.supports2(li);
-                list.push_candidates_within(
-                    grid, pt.y, pt.z, level, yi, zi, i, support2, reach,
-                );
-            } else {
-                list.push_candidates(grid, pt.y, pt.z, yi, zi, i, kernel.support2());
-            }
-            // The kernels of i's pairs with a base-resolution and with a coarse neighbour.
-            let (k0, k1) = if MULTI {
-                (*pairs.pair(li, 0), *pairs.pair(li, 1))
-            } else {
-                (kernel, kernel)
-            };
-            let entries = list.last_entries();
-            let (mut ay, mut az, mut vy_acc, mut vz_acc) = (0.0, 0.0, 0.0, 0.0);
-            let mut sums = antuono2010::GradientSums::default();
-            count += entries.len() as u64;
-            for tags in entries.chunks_mut(BATCH) {
-                let nb = tags.len();
-                b.gather::<true, MULTI>(tags, &pt, level);
-                for l in 0..BATCH {
-                    let dz = zi - b.z[l];
-                    let dy = yi - b.y[l];
-                    let r2 = dy * dy + dz * dz;
-                    let r = r2.sqrt();
-                    let f = if MULTI && b.coarse[l] {
-                        k1.grad_factor(r)
-                    } else {
-                        k0.grad_factor(r)
-                    };
-                    let fw = f * b.vol[l];
-                    let (dvy, dvz) = (vyi - b.vy[l], vzi - b.vz[l]);
-                    let psum = if RIEMANN {
-                        let vdotr = dvy * dy + dvz * dz;
-                        riemann::pressure_sum(
-                            p_i, b.p[l], rho_i, b.rho[l], vdotr, r, c0, b.fluid[l],
-                        )
-                    } else {
-                        p_i + b.p[l]
-                    };
-                    let pf = psum * fw;
-                    t.a[l] = pf * dy;
-                    t.b[l] = pf * dz;
-                    if VISCOUS {
-                        let vdotd = dvy * dy + dvz * dz;
-                        t.c[l] = vdotd / (r2 + eps2) * fw;
-                    }
-                    (t.dy[l], t.dz[l], t.fw[l]) = (dy, dz, fw);
-                }
-                for l in 0..nb {
-                    ay -= t.a[l];
-                    az -= t.b[l];
-                    if GRAD {
-                        sums.add(t.fw[l], t.dy[l], t.dz[l], b.rho[l] - rho_i);
-                    }
-                    if VISCOUS && b.fluid[l] {
-                        vy_acc += t.c[l] * t.dy[l];
-                        vz_acc += t.c[l] * t.dz[l];
-                    }
-                }
-            }
+    list.clear();
+    let mut count = 0u64;
+    let mut b = Gathered::default();
+    let mut t = Terms::default();
+    for (k, (out, grad)) in out.iter_mut().zip(grad.iter_mut()).enumerate() {
+        let i = c * LIST_CHUNK + k;
+        if pt.kind[i] != Kind::Fluid {
+            out[0] = 0.0;
+            out[1] = 0.0;
+            *grad = [0.0; 2];
             list.end_particle();
-            let inv_rho = 1.0 / rho_i;
-            out[0] = (ay + visc * vy_acc) * inv_rho;
-            out[1] = (az + visc * vz_acc) * inv_rho - g;
-            *grad = if GRAD { sums.gradient() } else { [0.0; 2] };
+            continue;
         }
+        let (yi, zi, vyi, vzi) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i]);
+        let (rho_i, p_i) = (pt.rho[i], pt.p[i]);
+        // Search first (the candidates into the list), then the batched pair loop
+        // ([`crate::sph::pair_batch`]), which also flags the fluid neighbours in the list.
+        let li = if MULTI { level[i] } else { 0 };
+        if MULTI {
+            let reach = grid.reach(li, yi, zi);
+            let support2 = pairs.supports2(li);
+            list.push_candidates_within(grid, pt.y, pt.z, level, yi, zi, i, support2, reach);
+        } else {
+            list.push_candidates(grid, pt.y, pt.z, yi, zi, i, kernel.support2());
+        }
+        // The kernels of i's pairs with a base-resolution and with a coarse neighbour.
+        let (k0, k1) = if MULTI {
+            (*pairs.pair(li, 0), *pairs.pair(li, 1))
+        } else {
+            (kernel, kernel)
+        };
+        let entries = list.last_entries();
+        let (mut ay, mut az, mut vy_acc, mut vz_acc) = (0.0, 0.0, 0.0, 0.0);
+        let mut sums = antuono2010::GradientSums::default();
+        count += entries.len() as u64;
+        for tags in entries.chunks_mut(BATCH) {
+            let nb = tags.len();
+            b.gather::<true, MULTI>(tags, &pt, level);
+            for l in 0..BATCH {
+                let dz = zi - b.z[l];
+                let dy = yi - b.y[l];
+                let r2 = dy * dy + dz * dz;
+                let r = r2.sqrt();
+                let f = if MULTI && b.coarse[l] {
+                    k1.grad_factor(r)
+                } else {
+                    k0.grad_factor(r)
+                };
+                let fw = f * b.vol[l];
+                let (dvy, dvz) = (vyi - b.vy[l], vzi - b.vz[l]);
+                let psum = if RIEMANN {
+                    let vdotr = dvy * dy + dvz * dz;
+                    riemann::pressure_sum(p_i, b.p[l], rho_i, b.rho[l], vdotr, r, c0, b.fluid[l])
+                } else {
+                    p_i + b.p[l]
+                };
+                let pf = psum * fw;
+                t.a[l] = pf * dy;
+                t.b[l] = pf * dz;
+                if VISCOUS {
+                    let vdotd = dvy * dy + dvz * dz;
+                    t.c[l] = vdotd / (r2 + eps2) * fw;
+                }
+                (t.dy[l], t.dz[l], t.fw[l]) = (dy, dz, fw);
+            }
+            for l in 0..nb {
+                ay -= t.a[l];
+                az -= t.b[l];
+                if GRAD {
+                    sums.add(t.fw[l], t.dy[l], t.dz[l], b.rho[l] - rho_i);
+                }
+                if VISCOUS && b.fluid[l] {
+                    vy_acc += t.c[l] * t.dy[l];
+                    vz_acc += t.c[l] * t.dz[l];
+                }
+            }
+        }
+        list.end_particle();
+        let inv_rho = 1.0 / rho_i;
+        out[0] = (ay + visc * vy_acc) * inv_rho;
+        out[1] = (az + visc * vz_acc) * inv_rho - g;
+        *grad = if GRAD { sums.gradient() } else { [0.0; 2] };
+    }
     count
-}
-
-/// What a chunk of the continuity pass reads.
-#[derive(Clone, Copy)]
-struct ContinuityChunk<'a> {
-    c: usize,
-    pt: View<'a>,
-    grad_rho: &'a [[f64; 2]],
-    level: &'a [u8],
-    kernel: WendlandC2,
-    pairs: PairKernels,
-    delta_term: f64,
-    c0: f64,
-    rho0_g: f64,
-}
-
-/// [`continuity_chunk`] compiled with AVX2.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-fn continuity_chunk_avx2<const RIEMANN: bool, const CORRECTED: bool, const MULTI: bool>(
-    ctx: &ContinuityChunk,
-    out: &mut [[f64; 3]],
-    list: &ChunkLists,
-) {
-    continuity_chunk::<RIEMANN, CORRECTED, MULTI>(ctx, out, list)
-}
-
-/// The continuity pass over chunk `ctx.c` of the particles.
-#[inline(always)]
-fn continuity_chunk<const RIEMANN: bool, const CORRECTED: bool, const MULTI: bool>(
-    ctx: &ContinuityChunk,
-    out: &mut [[f64; 3]],
-    list: &ChunkLists,
-) {
-    let ContinuityChunk {
-        c,
-        pt,
-        grad_rho,
-        level,
-        kernel,
-        pairs,
-        delta_term,
-        c0,
-        rho0_g,
-    } = *ctx;
-        let mut b = Gathered::default();
-        let mut t = Terms::default();
-        for (k, out) in out.iter_mut().enumerate() {
-            let i = c * LIST_CHUNK + k;
-            if pt.kind[i] != Kind::Fluid {
-                out[2] = 0.0;
-                continue;
-            }
-            let (yi, zi, vyi, vzi, rho_i, p_i) =
-                (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i], pt.rho[i], pt.p[i]);
-            // The kernels of i's pairs with a base-resolution and with a coarse neighbour.
-            let (k0, k1) = if MULTI {
-                (*pairs.pair(level[i], 0), *pairs.pair(level[i], 1))
-            } else {
-                (kernel, kernel)
-            };
-            // Riemann dissipation is scaled by rho_i, delta-SPH by delta h c0.
-            let diff_scale = if RIEMANN { rho_i } else { delta_term };
-            let gi = grad_rho[i];
-            let mut corrected = kernel_correction::DivergenceSums::default();
-            let (mut div, mut diff) = (0.0, 0.0);
-            let mut tags_buf = [0u32; BATCH];
-            for tags in list.tags(k).chunks(BATCH) {
-                let nb = tags.len();
-                tags_buf[..nb].copy_from_slice(tags);
-                b.gather::<false, MULTI>(&mut tags_buf[..nb], &pt, level);
-                if !RIEMANN {
-                    b.gradients(tags, grad_rho);
-                }
-                for l in 0..BATCH {
-                    let dz = zi - b.z[l];
-                    let dy = yi - b.y[l];
-                    let r = (dy * dy + dz * dz).sqrt();
-                    let f = if MULTI && b.coarse[l] {
-                        k1.grad_factor(r)
-                    } else {
-                        k0.grad_factor(r)
-                    };
-                    let fw = f * b.vol[l];
-                    let (dvy, dvz) = (vyi - b.vy[l], vzi - b.vz[l]);
-                    t.a[l] = fw * (dvy * dy + dvz * dz);
-                    if RIEMANN {
-                        t.b[l] = riemann::continuity_term(
-                            p_i,
-                            b.p[l],
-                            rho_i,
-                            b.rho[l],
-                            fw,
-                            r,
-                            c0,
-                            -rho0_g * dz,
-                        );
-                    }
-                    (t.dy[l], t.dz[l], t.fw[l], t.dvy[l], t.dvz[l]) = (dy, dz, fw, dvy, dvz);
-                }
-                for l in 0..nb {
-                    if CORRECTED {
-                        corrected.add(t.fw[l], t.dy[l], t.dz[l], t.dvy[l], t.dvz[l]);
-                    } else {
-                        div += t.a[l];
-                    }
-                    // Diffusion only between fluid particles: a flux to a dummy particle
-                    // would be a mass flux through the wall.
-                    if b.fluid[l] && RIEMANN {
-                        diff += t.b[l];
-                    } else if b.fluid[l] {
-                        let gsum = [gi[0] + b.gy[l], gi[1] + b.gz[l]];
-                        diff += antuono2010::pair_term(
-                            t.fw[l], t.dy[l], t.dz[l], rho_i, b.rho[l], gsum,
-                        );
-                    }
-                }
-            }
-            if CORRECTED {
-                div = corrected.corrected();
-            }
-            out[2] = rho_i * div + diff_scale * diff;
-        }
 }

@@ -294,6 +294,14 @@ impl Simulation {
         self.lists_fresh = true;
     }
 
+    /// The momentum and the continuity pass at the current state, without a time step: the pair loops
+    /// alone, for the benchmarks (`benches/pair_loop.rs`). The rates they leave are the ones the state
+    /// gives, so a following [`Simulation::step`] is unaffected.
+    pub fn evaluate_pair_passes(&mut self) {
+        self.evaluate_momentum();
+        self.evaluate_continuity();
+    }
+
     /// Wall pressure on the contour and sensors; integrate the section force.
     fn sample_body(&mut self) {
         let t0 = std::time::Instant::now();
