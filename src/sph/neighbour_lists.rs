@@ -360,12 +360,12 @@ mod tests {
                 pt.z[i],
                 i,
                 support * support,
-                |j, _, _, r2, m| want.push((j, m, j % 3 == 0, r2.sqrt())),
+                |j, _, _, r2, m| want.push((j, m, j.is_multiple_of(3), r2.sqrt())),
             );
             list.push_candidates(&g, &pt.y, &pt.z, pt.y[i], pt.z[i], i, support * support);
             for t in list.last_entries() {
                 let j = neighbour(*t).0;
-                mark_fluid(t, j % 3 == 0);
+                mark_fluid(t, j.is_multiple_of(3));
             }
             list.end_particle();
             want_all.push(want);
