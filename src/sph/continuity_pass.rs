@@ -23,9 +23,13 @@ pub fn continuity_rates(
     kernel: &WendlandC2,
     s: &Setup,
 ) {
+    // A refined tank runs the Riemann scheme (checked by the momentum pass), with the corrected
+    // divergence or without.
     if pt.multi_resolution() {
-        assert!(s.riemann && !s.divergence_correction);
-        return continuity_pass::<true, false, true>(lists, pt, kernel, s);
+        return match s.divergence_correction {
+            false => continuity_pass::<true, false, true>(lists, pt, kernel, s),
+            true => continuity_pass::<true, true, true>(lists, pt, kernel, s),
+        };
     }
     match (s.riemann, s.divergence_correction) {
         (true, false) => continuity_pass::<true, false, false>(lists, pt, kernel, s),
