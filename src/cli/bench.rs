@@ -1,43 +1,70 @@
 //! `slamtool bench`: SPH throughput on a standard case (30 deg wedge entering at 5 m/s, about 100,000 fluid
-//! particles in a half tank), a fixed number of time steps.
+//! particles in a half tank of 4 b x 3 b, uniform or refined), a fixed number of time steps; optionally
+//! on 1, 2, ... threads in one run (`--threads-scan`) for the thread scaling.
 
-use clap::Args;
+use clap::{Args, ValueEnum};
 use slamtool::provenance::{GIT_COMMIT, TOOL};
-use slamtool::sph::{self, MotionSpec, Overrides, Simulation, body::Section};
+use slamtool::sph::{self, MotionSpec, Overrides, Simulation, body::Section, case::Setup};
 
 use super::global::{self, JsonArg};
 
 /// Examples at the end of `slamtool bench --help`.
 pub const EXAMPLES: &str = "\
 Examples:
-  slamtool bench
   slamtool bench --steps 50 --particles 20000
+  slamtool bench --tank refined --threads-scan
   RAYON_NUM_THREADS=1 slamtool bench --json";
+
+/// The tank of the benchmark.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum BenchTank {
+    /// One particle spacing everywhere.
+    Uniform,
+    /// Base spacing in a band around the wedge, twice it beyond.
+    Refined,
+}
 
 #[derive(Debug, Args)]
 pub struct BenchArgs {
     /// Number of time steps to time.
     #[arg(long, default_value_t = 200)]
     steps: u64,
-    /// Approximate number of fluid particles.
+    /// Approximate number of fluid particles (of the uniform tank; a refined one holds fewer).
     #[arg(long, default_value_t = 100_000)]
     particles: u64,
+    /// Uniform or refined tank.
+    #[arg(long, value_enum, default_value_t = BenchTank::Uniform)]
+    tank: BenchTank,
+    /// Time the run on 1, 2, ... up to the available threads (each in its own thread pool) and report
+    /// the speed-up over 1 thread.
+    #[arg(long)]
+    threads_scan: bool,
     #[command(flatten)]
     json: JsonArg,
 }
 
-pub fn run(a: BenchArgs) -> slamtool::Result<()> {
-    if a.particles < 1000 || a.steps == 0 {
-        return Err(slamtool::Error::Invalid(
-            "--particles must be at least 1000 and --steps at least 1".into(),
-        ));
-    }
+/// The figures of one timed run.
+struct Timing {
+    threads: usize,
+    n_fluid: usize,
+    n_all: usize,
+    secs: f64,
+    interactions: u64,
+    bytes_per_particle: usize,
+    stages: serde_json::Value,
+    untimed_s: f64,
+    dp: f64,
+    c0: f64,
+    fz: f64,
+}
+
+fn setup(a: &BenchArgs) -> slamtool::Result<Setup> {
     let b = 0.25;
     let beta = 30f64.to_radians();
     let section = Section::wedge(beta, b, 1.5 * b * beta.tan())?;
-    // Half tank of 4 b x 3 b: 12 (b/dp)^2 fluid particles.
+    // Half tank of 4 b x 3 b: 12 (b/dp)^2 fluid particles at the base spacing.
     let n_half = (a.particles as f64 / 12.0).sqrt();
-    let setup = sph::case::resolve(
+    sph::case::resolve(
         "bench_wedge30_5ms",
         &section,
         &MotionSpec::Constant { speed_m_s: 5.0 },
@@ -47,75 +74,144 @@ pub fn run(a: BenchArgs) -> slamtool::Result<()> {
             // Fixed tank (the automatic one grows with c0 t_end), so the particle count is as stated.
             tank_half_width: Some(4.0 * b),
             tank_depth: Some(3.0 * b),
+            refinement: Some(a.tank == BenchTank::Refined),
             ..Default::default()
         },
-    )?;
-    global::note(&format!(
-        "timing {} steps of a 30 deg wedge at 5 m/s on {} thread(s)",
-        a.steps,
-        rayon::current_num_threads()
-    ));
+    )
+}
+
+/// Build the case and time `steps` steps on the current thread pool.
+fn time_run(setup: Setup, steps: u64) -> slamtool::Result<Timing> {
     let mut sim = Simulation::new(setup)?;
     let n_fluid = sim.n_fluid();
     let n_all = sim.pt.len();
-    let c_setup = sim.counters.clone();
+    let c0 = sim.counters.clone();
     let t0 = std::time::Instant::now();
-    for _ in 0..a.steps {
+    for _ in 0..steps {
         sim.step().map_err(|e| sim.failure(&e))?;
     }
     let secs = t0.elapsed().as_secs_f64();
-    let mut c = sim.counters.clone();
-    c.interactions -= c_setup.interactions;
-    let threads = rayon::current_num_threads();
-    let out = serde_json::json!({
+    let c = &sim.counters;
+    let stages = serde_json::json!({
+        "sort": c.sort_s - c0.sort_s, "boundary": c.boundary_s - c0.boundary_s,
+        "continuity": c.continuity_s - c0.continuity_s, "momentum": c.momentum_s - c0.momentum_s,
+        "integrate": c.integrate_s - c0.integrate_s, "sensors": c.sensors_s - c0.sensors_s,
+        "output": c.output_s - c0.output_s,
+    });
+    Ok(Timing {
+        threads: rayon::current_num_threads(),
+        n_fluid,
+        n_all,
+        secs,
+        interactions: c.interactions - c0.interactions,
+        bytes_per_particle: sim.bytes_per_particle(),
+        stages,
+        untimed_s: secs - (c.total_s() - c0.total_s()),
+        dp: sim.setup.dp,
+        c0: sim.setup.c0,
+        fz: sim.body.fz,
+    })
+}
+
+pub fn run(a: BenchArgs) -> slamtool::Result<()> {
+    if a.particles < 1000 || a.steps == 0 {
+        return Err(slamtool::Error::Invalid(
+            "--particles must be at least 1000 and --steps at least 1".into(),
+        ));
+    }
+    let tank = match a.tank {
+        BenchTank::Uniform => "uniform",
+        BenchTank::Refined => "refined",
+    };
+    let available = rayon::current_num_threads();
+    let counts: Vec<usize> = if a.threads_scan {
+        (1..=available).collect()
+    } else {
+        vec![available]
+    };
+    let mut runs = Vec::new();
+    for &n in &counts {
+        global::note(&format!(
+            "timing {} steps of a 30 deg wedge at 5 m/s ({tank} tank) on {n} thread(s)",
+            a.steps
+        ));
+        let s = setup(&a)?;
+        let t = if a.threads_scan {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(n)
+                .build()
+                .map_err(|e| slamtool::Error::Invalid(format!("thread pool of {n}: {e}")))?;
+            pool.install(|| time_run(s, a.steps))?
+        } else {
+            time_run(s, a.steps)?
+        };
+        runs.push(t);
+    }
+    let per_run = |t: &Timing| {
+        serde_json::json!({
+            "threads": t.threads,
+            "seconds": t.secs,
+            "fluid_particle_steps_per_s": t.n_fluid as f64 * a.steps as f64 / t.secs,
+            "all_particle_steps_per_s": t.n_all as f64 * a.steps as f64 / t.secs,
+            "neighbour_interactions_per_s": t.interactions as f64 / t.secs,
+            "stage_seconds": t.stages,
+            "untimed_seconds": t.untimed_s,
+            "speed_up_over_1_thread": runs.first().filter(|r| r.threads == 1).map(|r| r.secs / t.secs),
+        })
+    };
+    let last = runs.last().expect("at least one run");
+    let mut out = per_run(last);
+    let extra = serde_json::json!({
         "tool": TOOL,
-        "provenance": {"tool": TOOL, "commit": GIT_COMMIT, "inputs": [], "settings": {"steps": a.steps, "particles": a.particles}},
+        "provenance": {"tool": TOOL, "commit": GIT_COMMIT, "inputs": [], "settings": {"steps": a.steps, "particles": a.particles, "tank": tank, "threads_scan": a.threads_scan}},
         "warnings": [],
         "outputs": null,
         "case": "30 deg wedge, 5 m/s, half tank 4b x 3b, b = 0.25 m",
-        "threads": threads,
+        "tank": tank,
         "steps": a.steps,
-        "fluid_particles": n_fluid,
-        "all_particles": n_all,
-        "dp_m": sim.setup.dp,
-        "c0_m_per_s": sim.setup.c0,
-        "seconds": secs,
-        "fluid_particle_steps_per_s": n_fluid as f64 * a.steps as f64 / secs,
-        "all_particle_steps_per_s": n_all as f64 * a.steps as f64 / secs,
-        "neighbour_interactions_per_s": c.interactions as f64 / secs,
-        "interactions_per_fluid_particle": c.interactions as f64 / (a.steps as f64 * n_fluid as f64),
-        "bytes_per_particle": sim.bytes_per_particle(),
-        "stage_seconds": {
-            "sort": c.sort_s - c_setup.sort_s, "boundary": c.boundary_s - c_setup.boundary_s,
-            "continuity": c.continuity_s - c_setup.continuity_s, "momentum": c.momentum_s - c_setup.momentum_s,
-            "integrate": c.integrate_s - c_setup.integrate_s, "sensors": c.sensors_s - c_setup.sensors_s,
-        },
-        "final_force_n_per_m": sim.body.fz,
+        "fluid_particles": last.n_fluid,
+        "all_particles": last.n_all,
+        "dp_m": last.dp,
+        "c0_m_per_s": last.c0,
+        "interactions_per_fluid_particle": last.interactions as f64 / (a.steps as f64 * last.n_fluid as f64),
+        "bytes_per_particle": last.bytes_per_particle,
+        "final_force_n_per_m": last.fz,
+        "thread_scan": runs.iter().map(per_run).collect::<Vec<_>>(),
     });
+    if let (Some(o), Some(e)) = (out.as_object_mut(), extra.as_object()) {
+        o.extend(e.clone());
+    }
     if a.json.json {
         global::print_json(out);
-    } else {
+        return Ok(());
+    }
+    println!(
+        "case                      30 deg wedge at 5 m/s, {tank} tank, {} steps",
+        a.steps
+    );
+    println!(
+        "particles                 {} fluid, {} with wall and body dummies",
+        last.n_fluid, last.n_all
+    );
+    println!("bytes per particle        {}", last.bytes_per_particle);
+    for t in &runs {
+        let o = per_run(t);
+        println!("threads                   {}", t.threads);
+        println!("  time                      {:.2} s", t.secs);
+        for (label, key) in [
+            ("fluid particle-steps/s", "fluid_particle_steps_per_s"),
+            ("all particle-steps/s", "all_particle_steps_per_s"),
+            ("neighbour interactions/s", "neighbour_interactions_per_s"),
+        ] {
+            println!("  {label:<26}{:.3e}", o[key].as_f64().unwrap_or(f64::NAN));
+        }
+        if let Some(s) = o["speed_up_over_1_thread"].as_f64() {
+            println!("  speed-up over 1 thread    {s:.2}");
+        }
         println!(
-            "case                      30 deg wedge at 5 m/s, {a_steps} steps",
-            a_steps = a.steps
+            "  stage seconds             {} (untimed {:.3})",
+            t.stages, t.untimed_s
         );
-        println!("threads                   {threads}");
-        println!("particles                 {n_fluid} fluid, {n_all} with wall and body dummies");
-        println!("time                      {secs:.2} s");
-        println!(
-            "fluid particle-steps/s    {:.3e}",
-            out["fluid_particle_steps_per_s"].as_f64().unwrap()
-        );
-        println!(
-            "all particle-steps/s      {:.3e}",
-            out["all_particle_steps_per_s"].as_f64().unwrap()
-        );
-        println!(
-            "neighbour interactions/s  {:.3e}",
-            out["neighbour_interactions_per_s"].as_f64().unwrap()
-        );
-        println!("bytes per particle        {}", sim.bytes_per_particle());
-        println!("stage seconds             {}", out["stage_seconds"]);
     }
     Ok(())
 }

@@ -16,7 +16,7 @@
 
 use rayon::prelude::*;
 
-use crate::sph::neighbours::{ChunkLists, LIST_CHUNK, NeighbourLists};
+use crate::sph::neighbour_lists::{LIST_CHUNK, ListsAt, NeighbourLists};
 use crate::sph::particles::{Kind, Particles};
 use crate::sph::riemann;
 use crate::sph::sensors::SensorSet;
@@ -43,11 +43,12 @@ pub fn interaction_force(
     z_range: [f64; 2],
     scratch: &mut ForceScratch,
 ) -> [f64; 2] {
+    let at = lists.at(pt);
     lists
         .chunks
         .par_iter()
         .enumerate()
-        .map(|(c, list)| {
+        .map(|(c, _)| {
             let (mut fy, mut fz) = (0.0, 0.0);
             let n = LIST_CHUNK.min(pt.len().saturating_sub(c * LIST_CHUNK));
             let (first, last) = (c * LIST_CHUNK, c * LIST_CHUNK + n.max(1) - 1);
@@ -62,7 +63,7 @@ pub fn interaction_force(
                 if pt.kind[i] != Kind::Fluid {
                     continue;
                 }
-                if let Some([py, pz]) = body_pair_force(list, k, i, pt, riemann, c0) {
+                if let Some([py, pz]) = body_pair_force(&at, c, k, i, pt, riemann, c0) {
                     fy += py;
                     fz += pz;
                 }
@@ -102,19 +103,20 @@ pub fn panel_forces<'a>(
     }
     scratch.panels.clear();
     scratch.panels.resize(np * lists.chunks.len(), [0.0; 2]);
+    let at = lists.at(pt);
     scratch
         .panels
         .par_chunks_mut(np)
         .zip(lists.chunks.par_iter())
         .enumerate()
-        .for_each(|(c, (f, list))| {
+        .for_each(|(c, (f, _))| {
             let n = LIST_CHUNK.min(pt.len().saturating_sub(c * LIST_CHUNK));
             for k in 0..n {
                 let i = c * LIST_CHUNK + k;
                 if pt.kind[i] != Kind::Fluid || pt.y[i] < 0.0 {
                     continue;
                 }
-                let Some([fy, fz]) = body_pair_force(list, k, i, pt, riemann, c0) else {
+                let Some([fy, fz]) = body_pair_force(&at, c, k, i, pt, riemann, c0) else {
                     continue;
                 };
                 let s = set.arc_of(pt.y[i], pt.z[i] - z_keel);
@@ -137,7 +139,8 @@ pub fn panel_forces<'a>(
 /// The force of fluid particle i (entry k of its list chunk) on all the body dummies it neighbours (real
 /// and mirror images), sum_j P_ij V_i F_ij V_j r_ij; `None` when it touches no body dummy.
 fn body_pair_force(
-    list: &ChunkLists,
+    at: &ListsAt,
+    c: usize,
     k: usize,
     i: usize,
     pt: &Particles,
@@ -147,7 +150,7 @@ fn body_pair_force(
     let (yi, zi, vyi, vzi) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i]);
     let (p_i, rho_i, vol_i) = (pt.p[i], pt.rho[i], pt.vol[i]);
     let (mut fy, mut fz, mut touches) = (0.0, 0.0, false);
-    for e in list.of(k) {
+    for e in at.of(c, k, i) {
         let j = e.j;
         if e.fluid || pt.kind[j] != Kind::Body {
             continue;

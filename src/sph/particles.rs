@@ -152,10 +152,32 @@ impl Particles {
         }
     }
 
-    /// Bytes of particle storage per particle (state, rates, gradients and sort scratch).
-    pub fn bytes_per_particle() -> usize {
-        // y z vy vz rho p mass vol + scratch: 9 f64; kind, level + scratches: 4 bytes; rate 3 f64; grad 2 f64.
-        9 * 8 + 4 + 3 * 8 + 2 * 8
+    /// Bytes allocated for the particle storage (state, rates, gradients and sort scratch; capacities
+    /// counted, not only the lengths in use).
+    pub fn bytes(&self) -> usize {
+        fn b<T>(v: &Vec<T>) -> usize {
+            v.capacity() * std::mem::size_of::<T>()
+        }
+        [
+            &self.y,
+            &self.z,
+            &self.vy,
+            &self.vz,
+            &self.rho,
+            &self.mass,
+            &self.vol,
+            &self.p,
+            &self.scratch,
+        ]
+        .iter()
+        .map(|v| b(v))
+        .sum::<usize>()
+            + b(&self.kind)
+            + b(&self.scratch_kind)
+            + b(&self.rate)
+            + b(&self.grad_rho)
+            + b(&self.level)
+            + b(&self.scratch_level)
     }
 }
 

@@ -53,6 +53,11 @@ pub struct Shifting {
 }
 
 impl Shifting {
+    /// Bytes allocated (zero unless shifting is on).
+    pub fn bytes(&self) -> usize {
+        8 * self.lambda.capacity() + 16 * (self.normal.capacity() + self.shift.capacity())
+    }
+
     /// Compute the displacements of this step from the neighbour lists of the current positions.
     /// `dp` is the particle spacing and `cfl_mach` the product C Ma of the Courant number and U_max / c0.
     pub fn compute(
@@ -64,6 +69,7 @@ impl Shifting {
         cfl_mach: f64,
     ) {
         let n = pt.len();
+        let at = lists.at(pt);
         self.lambda.resize(n, 1.0);
         self.normal.resize(n, [0.0; 2]);
         self.shift.resize(n, [0.0; 2]);
@@ -75,7 +81,7 @@ impl Shifting {
             .zip(normal.par_chunks_mut(LIST_CHUNK))
             .zip(lists.chunks.par_iter())
             .enumerate()
-            .for_each(|(c, ((lam, nor), list))| {
+            .for_each(|(c, ((lam, nor), _))| {
                 for (k, (lam, nor)) in lam.iter_mut().zip(nor.iter_mut()).enumerate() {
                     let i = c * LIST_CHUNK + k;
                     if pt.kind[i] != Kind::Fluid {
@@ -85,7 +91,7 @@ impl Shifting {
                     }
                     let (yi, zi) = (pt.y[i], pt.z[i]);
                     let (mut b11, mut b12, mut b22, mut gy, mut gz) = (0.0, 0.0, 0.0, 0.0, 0.0);
-                    for e in list.of(k) {
+                    for e in at.of(c, k, i) {
                         let j = e.j;
                         let (dy, dz) = e.offset(yi, zi, &pt.y, &pt.z);
                         let fv = e.f * pt.vol[j];
@@ -121,7 +127,7 @@ impl Shifting {
             .par_chunks_mut(LIST_CHUNK)
             .zip(lists.chunks.par_iter())
             .enumerate()
-            .for_each(|(c, (out, list))| {
+            .for_each(|(c, (out, _))| {
                 for (k, out) in out.iter_mut().enumerate() {
                     let i = c * LIST_CHUNK + k;
                     *out = [0.0; 2];
@@ -131,7 +137,7 @@ impl Shifting {
                     let (yi, zi) = (pt.y[i], pt.z[i]);
                     let mut near_surface = lambda[i] < LAMBDA_SURFACE;
                     let (mut sy, mut sz) = (0.0, 0.0);
-                    for e in list.of(k) {
+                    for e in at.of(c, k, i) {
                         let j = e.j;
                         let (dy, dz) = e.offset(yi, zi, &pt.y, &pt.z);
                         let q = kernel.w(e.r) / w_dp;

@@ -294,6 +294,14 @@ impl Simulation {
         self.lists_fresh = true;
     }
 
+    /// The momentum and the continuity pass at the current state, without a time step: the pair loops
+    /// alone, for the benchmarks (`benches/pair_loop.rs`). The rates they leave are the ones the state
+    /// gives, so a following [`Simulation::step`] is unaffected.
+    pub fn evaluate_pair_passes(&mut self) {
+        self.evaluate_momentum();
+        self.evaluate_continuity();
+    }
+
     /// Wall pressure on the contour and sensors; integrate the section force.
     fn sample_body(&mut self) {
         let t0 = std::time::Instant::now();
@@ -580,11 +588,15 @@ impl Simulation {
         Ok(())
     }
 
-    /// Bytes of storage per particle: the particle arrays, the cell index and sort order (2 x u32), and the
-    /// neighbour lists as they stand (4 bytes of list start per particle, 20 bytes per neighbour entry: index with flags, distance and kernel factor).
+    /// Bytes of storage per particle, everything that grows with the particle count counted at its
+    /// allocated capacity: the particle arrays with their sort scratch, the cell grid (cell index, sort
+    /// order, cell starts), the neighbour lists (a list start per particle and 4 bytes per neighbour
+    /// entry) and the shifting arrays when shifting is on.
     pub fn bytes_per_particle(&self) -> usize {
         let n = self.pt.len().max(1);
-        Particles::bytes_per_particle() + 8 + self.lists.bytes().div_ceil(n)
+        let total =
+            self.pt.bytes() + self.grid.bytes() + self.lists.bytes() + self.shifting.bytes();
+        total.div_ceil(n)
     }
 
     /// Wall pressure at a point of a fixed wall (hydrostatic checks).
