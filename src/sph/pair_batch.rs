@@ -29,9 +29,6 @@ pub struct Gathered {
     pub rho: [f64; BATCH],
     pub p: [f64; BATCH],
     pub vol: [f64; BATCH],
-    /// Renormalised density gradient of j (mirrored for an image), gathered by [`Gathered::gradients`].
-    pub gy: [f64; BATCH],
-    pub gz: [f64; BATCH],
     pub fluid: [bool; BATCH],
     /// Whether j is coarse (level > 0; two-level runs only).
     pub coarse: [bool; BATCH],
@@ -69,17 +66,6 @@ impl Gathered {
             }
         }
     }
-
-    /// Gather the renormalised density gradients of the neighbours of `tags` (mirrored: (-g_y, g_z)).
-    #[inline(always)]
-    pub fn gradients(&mut self, tags: &[u32], grad_rho: &[[f64; 2]]) {
-        for (l, &t) in tags.iter().enumerate().take(BATCH) {
-            let (j, mirrored) = neighbour(t);
-            let g = grad_rho[j];
-            self.gy[l] = if mirrored { -g[0] } else { g[0] };
-            self.gz[l] = g[1];
-        }
-    }
 }
 
 /// Pair terms of a batch, lane by lane.
@@ -90,10 +76,7 @@ pub struct Terms {
     pub r2: [f64; BATCH],
     /// F_ij V_j.
     pub fw: [f64; BATCH],
-    pub dvy: [f64; BATCH],
-    pub dvz: [f64; BATCH],
-    /// Pass-specific terms (momentum: the pressure force components and the viscous factor;
-    /// continuity: the divergence and the dissipation term).
+    /// Pass-specific terms (the momentum pass's pressure force components and viscous factor).
     pub a: [f64; BATCH],
     pub b: [f64; BATCH],
     pub c: [f64; BATCH],
