@@ -22,23 +22,23 @@
 
 mod common;
 
+use common::sph::{WEDGE_HALF_BEAM, wedge_setup, window_mean};
+
 use slamtool::analytic::similarity_sensor::solution;
 use slamtool::loads::peaks::summarise;
-use slamtool::sph::{
-    self, MotionSpec, Overrides, RunOptions, SensorMethod, SensorSpec, body::Section,
-};
+use slamtool::sph::{self, Overrides, RunOptions, SensorMethod};
 use slamtool::validate::wedges::like_for_like;
 
 /// Zero-phase low-pass applied to every sensor history and to the reference (Hz).
 const CUTOFF_HZ: f64 = 2000.0;
-/// Entry speed (m/s) and half-beam (m); the study is scale-free, these only set the units.
+/// Entry speed (m/s); the study is scale-free, this and the half-beam ([`WEDGE_HALF_BEAM`]) only set the
+/// units.
 const SPEED: f64 = 5.0;
-const HALF_BEAM: f64 = 0.25;
-/// Sensors along the side, 10 mm wide, centres from `S_FIRST` to `S_LAST` of the side's length.
+/// Sensors along the side, 10 mm wide ([`wedge_setup`]), centres from `S_FIRST` to `S_LAST` of the
+/// side's length.
 const SENSORS: usize = 12;
 const S_FIRST: f64 = 0.10;
 const S_LAST: f64 = 0.75;
-const WIDTH: f64 = 0.01;
 /// End of the run as a fraction of Wagner's chine-wetting time.
 const T_FRAC: f64 = 0.92;
 
@@ -78,25 +78,15 @@ fn method_name(m: SensorMethod) -> &'static str {
 /// `divergence_correction` on or off.
 fn study(deg: f64, n_half: f64, method: SensorMethod, divergence_correction: bool) -> Study {
     let beta = deg.to_radians();
-    let b = HALF_BEAM;
-    let section = Section::wedge(beta, b, 1.5 * b * beta.tan()).unwrap();
-    let side = b / beta.cos();
-    let specs: Vec<SensorSpec> = (0..SENSORS)
-        .map(|k| SensorSpec {
-            name: format!("p{k}"),
-            s_m: side * (S_FIRST + (S_LAST - S_FIRST) * k as f64 / (SENSORS - 1) as f64),
-            width_m: WIDTH,
-        })
-        .collect();
-    let t_wet = 2.0 / std::f64::consts::PI * b * beta.tan() / SPEED;
-    let mut setup = sph::case::resolve(
-        "wedge_convergence",
-        &section,
-        &MotionSpec::Constant { speed_m_s: SPEED },
-        specs,
-        &Overrides {
+    let side = WEDGE_HALF_BEAM / beta.cos();
+    let mut setup = wedge_setup(
+        deg,
+        SPEED,
+        SENSORS,
+        [S_FIRST, S_LAST],
+        T_FRAC,
+        Overrides {
             particles_per_half_beam: Some(n_half),
-            t_end: Some(T_FRAC * t_wet),
             sensor_method: Some(method),
             divergence_correction: Some(divergence_correction),
             // Diagnostics: `CONV_RIEMANN=0` for delta-SPH with artificial viscosity (uniform tank),
@@ -112,8 +102,7 @@ fn study(deg: f64, n_half: f64, method: SensorMethod, divergence_correction: boo
                 .map(|_| false),
             ..Default::default()
         },
-    )
-    .unwrap();
+    );
     // No gravity: the similarity solution's infinite Froude number.
     setup.g = 0.0;
     // Diagnostics: `CONV_C0_FACTOR` scales the automatic sound speed (Mach-number effects).
@@ -149,18 +138,13 @@ fn study(deg: f64, n_half: f64, method: SensorMethod, divergence_correction: boo
         })
         .collect();
     let cf = 1000.0 * SPEED.powi(3) * sim.force;
-    let window: Vec<f64> =
-        h.t.iter()
-            .zip(&h.fz)
-            .filter(|(t, _)| **t >= 0.5 * t_end && **t <= 0.9 * t_end)
-            .map(|(t, f)| f / (cf * t))
-            .collect();
+    let ratio: Vec<f64> = h.t.iter().zip(&h.fz).map(|(t, f)| f / (cf * t)).collect();
     let st = Study {
         deg,
         n_half,
         method,
         rows,
-        force_ratio: window.iter().sum::<f64>() / window.len() as f64,
+        force_ratio: window_mean(&h.t, &ratio, 0.5 * t_end, 0.9 * t_end),
         wall_s: run.summary.wall_time_s,
     };
     print_study(&st);

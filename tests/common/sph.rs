@@ -40,6 +40,9 @@ pub fn window_mean(t: &[f64], x: &[f64], t0: f64, t1: f64) -> f64 {
     v.iter().sum::<f64>() / v.len() as f64
 }
 
+/// Half-beam of the test wedges (m).
+pub const WEDGE_HALF_BEAM: f64 = 0.25;
+
 /// A constant-speed wedge run (see [`wedge_run`]).
 pub struct WedgeRun {
     pub beta: f64,
@@ -79,37 +82,61 @@ pub fn wedge_run_numerics(
     method: SensorMethod,
     divergence_correction: bool,
 ) -> WedgeRun {
+    let setup = wedge_setup(
+        deadrise_deg,
+        speed,
+        sensors,
+        [0.15, 0.60],
+        t_frac,
+        Overrides {
+            particles_per_half_beam: Some(n_half),
+            sensor_method: Some(method),
+            divergence_correction: Some(divergence_correction),
+            ..Default::default()
+        },
+    );
+    WedgeRun {
+        beta: deadrise_deg.to_radians(),
+        speed,
+        result: sph::run(setup, &quiet()).unwrap(),
+    }
+}
+
+/// The set-up of a wedge of half-beam [`WEDGE_HALF_BEAM`] (knuckle there, vertical sides above) entering
+/// at constant `speed`, with `sensors` sensors of 10 mm spread evenly along the side between the
+/// fractions `span[0]` and `span[1]` of its length, run to `t_frac` of the Wagner chine-wetting time
+/// t = 2 b tan(beta) / (pi V); every other choice is taken from `overrides`.
+pub fn wedge_setup(
+    deadrise_deg: f64,
+    speed: f64,
+    sensors: usize,
+    span: [f64; 2],
+    t_frac: f64,
+    overrides: Overrides,
+) -> sph::case::Setup {
     let beta = deadrise_deg.to_radians();
-    let b = 0.25;
+    let b = WEDGE_HALF_BEAM;
     let section = Section::wedge(beta, b, 1.5 * b * beta.tan()).unwrap();
     let side = b / beta.cos();
     let specs = (0..sensors)
         .map(|k| SensorSpec {
             name: format!("p{k}"),
-            s_m: side * (0.15 + 0.45 * k as f64 / (sensors.max(2) - 1) as f64),
+            s_m: side * (span[0] + (span[1] - span[0]) * k as f64 / (sensors.max(2) - 1) as f64),
             width_m: 0.01,
         })
         .collect();
     let t_wet = 2.0 / std::f64::consts::PI * b * beta.tan() / speed;
-    let setup = sph::case::resolve(
+    sph::case::resolve(
         "wedge",
         &section,
         &MotionSpec::Constant { speed_m_s: speed },
         specs,
         &Overrides {
-            particles_per_half_beam: Some(n_half),
             t_end: Some(t_frac * t_wet),
-            sensor_method: Some(method),
-            divergence_correction: Some(divergence_correction),
-            ..Default::default()
+            ..overrides
         },
     )
-    .unwrap();
-    WedgeRun {
-        beta,
-        speed,
-        result: sph::run(setup, &quiet()).unwrap(),
-    }
+    .unwrap()
 }
 
 /// Largest |other - reference| of two section-force histories over their common steps, as a fraction of
