@@ -61,11 +61,11 @@ fn zhao_force_in_the_refined_tank_matches_the_uniform_one() {
 }
 
 #[test]
-fn a_refined_tank_needs_the_riemann_scheme_without_shifting() {
+fn a_refined_tank_needs_the_riemann_scheme() {
     let o = Overrides {
         particles_per_half_beam: Some(10.0),
         refinement: Some(true),
-        shifting: Some(true),
+        riemann: Some(false),
         ..Default::default()
     };
     let err = sph::case::resolve(
@@ -79,8 +79,70 @@ fn a_refined_tank_needs_the_riemann_scheme_without_shifting() {
     assert!(err.to_string().contains("Riemann"), "{err}");
 }
 
+/// Particle shifting in the refined tank (each pair with its own kernel, each particle with its own
+/// spacing, `sph::shifting`) against shifting in the uniform tank: the Zhao case at 20 particles per
+/// half-beam. Up to the peak the criterion of the tank without shifting holds (the force within 2 % of
+/// its peak, the peak within 2 %). After the peak, when the flow separates at the knuckles, a run with
+/// shifting is sensitive to any change: a uniform run with c0 1 % higher differs from the uniform one
+/// by 8.4 % of the peak, and the refined one by 10.0 % (measured 2026-11-27). The refined tank may change
+/// the whole history by no more than 1.5 times what that 1 % change of the sound speed does.
 #[test]
-fn the_automatic_tank_is_refined_unless_given_or_the_numerics_forbid_it() {
+fn shifting_in_the_refined_tank_matches_the_uniform_one() {
+    let table = ZHAO_VELOCITY.iter().map(|r| [r[0] * 1e-3, r[1]]).collect();
+    let motion = MotionSpec::Prescribed { table };
+    let o = Overrides {
+        particles_per_half_beam: Some(20.0),
+        t_end: Some(0.025),
+        refinement: Some(false),
+        shifting: Some(true),
+        ..Default::default()
+    };
+    let uniform = sph::case::resolve("uniform", &zhao_wedge(), &motion, Vec::new(), &o).unwrap();
+    let refined = sph::case::resolve(
+        "refined",
+        &zhao_wedge(),
+        &motion,
+        Vec::new(),
+        &Overrides {
+            refinement: Some(true),
+            c0: Some(uniform.c0),
+            ..o
+        },
+    )
+    .unwrap();
+    assert!(refined.refinement.is_some() && refined.shifting);
+    let mut faster = uniform.clone();
+    faster.c0 *= 1.01;
+    let a = sph::run(uniform, &quiet()).unwrap();
+    let b = sph::run(refined, &quiet()).unwrap();
+    let c = sph::run(faster, &quiet()).unwrap();
+    let (diff, ratio) = force_difference(&a, &b);
+    let (diff_c0, _) = force_difference(&a, &c);
+    let (fr, fo) = (&a.history.fz, &b.history.fz);
+    let k_peak = (0..fr.len().min(fo.len()))
+        .max_by(|&x, &y| fr[x].total_cmp(&fr[y]))
+        .unwrap();
+    let to_peak = (0..=k_peak)
+        .map(|k| (fr[k] - fo[k]).abs())
+        .fold(0.0, f64::max)
+        / fr[k_peak];
+    println!(
+        "Zhao 1996 with shifting, 20 particles: fluid particles uniform {}, refined {}; peak ratio \
+         {ratio:.4}, largest difference up to the peak {:.2} %, over the history {:.2} % (c0 x 1.01: \
+         {:.2} %)",
+        a.summary.fluid_particles,
+        b.summary.fluid_particles,
+        100.0 * to_peak,
+        100.0 * diff,
+        100.0 * diff_c0
+    );
+    assert!((ratio - 1.0).abs() < 0.02, "{ratio}");
+    assert!(to_peak < 0.02, "{to_peak}");
+    assert!(diff < 1.5 * diff_c0, "{diff} against {diff_c0}");
+}
+
+#[test]
+fn the_automatic_tank_is_refined_unless_given_or_delta_sph() {
     let motion = MotionSpec::Constant { speed_m_s: 2.0 };
     let resolve = |o: Overrides| {
         sph::case::resolve("default", &zhao_wedge(), &motion, Vec::new(), &o).unwrap()

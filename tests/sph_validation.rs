@@ -137,16 +137,18 @@ fn hydrostatic_fine() {
 // Determinism across thread counts.
 
 /// The same short wedge run on a 1-thread and a 2-thread rayon pool gives bit-identical histories and
-/// particle states, with the default numerics and with the alternatives (particle shifting, delta-SPH,
-/// contour-integrated force).
+/// particle states, with the default numerics, with the alternatives (particle shifting, delta-SPH,
+/// contour-integrated force) and with the Riemann scheme, shifting and the corrected divergence in the
+/// refined tank.
 #[test]
 fn identical_on_one_and_two_threads() {
-    for alt in [false, true] {
-        identical_on_one_and_two_threads_with(alt);
+    for variant in 0..3 {
+        identical_on_one_and_two_threads_with(variant);
     }
 }
 
-fn identical_on_one_and_two_threads_with(alt: bool) {
+fn identical_on_one_and_two_threads_with(variant: u8) {
+    let alt = variant == 1;
     let run = |threads: usize| {
         let pool = rayon::ThreadPoolBuilder::new()
             .num_threads(threads)
@@ -164,8 +166,9 @@ fn identical_on_one_and_two_threads_with(alt: bool) {
                 }],
                 &Overrides {
                     particles_per_half_beam: Some(20.0),
-                    shifting: Some(alt),
+                    shifting: Some(variant > 0),
                     riemann: Some(!alt),
+                    divergence_correction: Some(variant == 2),
                     force: Some(if alt {
                         ForceMethod::Contour
                     } else {
@@ -180,6 +183,7 @@ fn identical_on_one_and_two_threads_with(alt: bool) {
                 },
             )
             .unwrap();
+            assert_eq!(setup.refinement.is_some(), !alt, "variant {variant}");
             let mut sim = Simulation::new(setup).unwrap();
             for _ in 0..60 {
                 sim.step().unwrap();

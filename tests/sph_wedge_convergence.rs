@@ -139,6 +139,23 @@ fn study(deg: f64, n_half: f64, method: SensorMethod, divergence_correction: boo
         .collect();
     let cf = 1000.0 * SPEED.powi(3) * sim.force;
     let ratio: Vec<f64> = h.t.iter().zip(&h.fz).map(|(t, f)| f / (cf * t)).collect();
+    // `CONV_FORCE_TRACE=1`: F / F_similarity over tenths of the run (window means).
+    if std::env::var("CONV_FORCE_TRACE").is_ok_and(|v| v == "1") {
+        let trace: Vec<String> = (1..10)
+            .map(|k| {
+                let (a, b) = (
+                    (k as f64 - 0.5) / 10.0 * t_end,
+                    (k as f64 + 0.5) / 10.0 * t_end,
+                );
+                format!(
+                    "{:.1}: {:.3}",
+                    k as f64 / 10.0,
+                    window_mean(&h.t, &ratio, a, b)
+                )
+            })
+            .collect();
+        println!("F / F_similarity at t / t_end = {}", trace.join(", "));
+    }
     let st = Study {
         deg,
         n_half,

@@ -260,7 +260,7 @@ pub struct Overrides {
     /// Keel depth below the water at rest at t = 0 (m; None: 0, the keel at the surface).
     pub initial_immersion: Option<f64>,
     /// A refined tank: base resolution in a band around the body, 2 dp beyond (None: the default,
-    /// refined with an automatic tank and the Riemann scheme without shifting, else uniform).
+    /// refined with an automatic tank and the Riemann scheme, else uniform).
     pub refinement: Option<bool>,
 }
 
@@ -344,8 +344,8 @@ pub fn resolve(
     let tank_given = o.tank_half_width.is_some() || o.tank_depth.is_some();
     let mut tank_half_width = o.tank_half_width.unwrap_or(auto_w);
     let mut tank_depth = o.tank_depth.unwrap_or(auto_d);
-    // The refined tank is the default wherever it applies: an automatic tank and the Riemann scheme
-    // without shifting. A tank given by the user (an experiment's) stays uniform unless asked.
+    // The refined tank is the default wherever it applies: an automatic tank and the Riemann scheme.
+    // A tank given by the user (an experiment's) stays uniform unless asked.
     let riemann = o.riemann.unwrap_or(DEFAULT_RIEMANN);
     let shifting = o.shifting.unwrap_or(DEFAULT_SHIFTING);
     let refine = match o.refinement {
@@ -354,10 +354,8 @@ pub fn resolve(
             notes.push("uniform tank (the tank is given; `refined = true` refines it)".into());
             false
         }
-        None if !riemann || shifting => {
-            notes.push(
-                "uniform tank (a refined one needs the Riemann scheme without shifting)".into(),
-            );
+        None if !riemann => {
+            notes.push("uniform tank (a refined one needs the Riemann scheme)".into());
             false
         }
         None => true,
@@ -532,9 +530,9 @@ pub fn check(s: &Setup) -> Result<()> {
         }
     }
     if let Some(band) = &s.refinement {
-        if !s.riemann || s.shifting {
+        if !s.riemann {
             return Err(Error::Invalid(
-                "a refined tank needs the Riemann scheme (riemann = true) without particle shifting".into(),
+                "a refined tank needs the Riemann scheme (riemann = true)".into(),
             ));
         }
         if !(band.half_width > 0.0

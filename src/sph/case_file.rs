@@ -100,7 +100,7 @@ struct TankFile {
     /// Thickness of the absorbing layer along the walls and bottom (0 for none).
     damping_zone_m: Option<Spanned<f64>>,
     /// Base resolution in a band around the body, 2 dp beyond (default: true with the automatic tank
-    /// and the Riemann scheme without shifting, false with a given tank).
+    /// and the Riemann scheme, false with a given tank).
     refined: Option<bool>,
 }
 

@@ -233,6 +233,15 @@ impl PairKernel {
         }
     }
 
+    /// The kernel of the pair of levels `li`, `lj` (the run's one kernel when it is uniform).
+    #[inline(always)]
+    pub fn pair(&self, li: u8, lj: u8) -> &WendlandC2 {
+        match &self.refined {
+            Some(p) => p.pair(li, lj),
+            None => &self.uniform,
+        }
+    }
+
     /// F(r) of the pair of levels `li`, `lj`.
     #[inline(always)]
     pub fn grad_factor(&self, li: u8, lj: u8, r: f64) -> f64 {
@@ -286,7 +295,7 @@ impl NeighbourLists {
 #[derive(Clone, Copy)]
 pub struct ListsAt<'a> {
     pub lists: &'a NeighbourLists,
-    kernel: PairKernel,
+    pub kernel: PairKernel,
     y: &'a [f64],
     z: &'a [f64],
     level: &'a [u8],

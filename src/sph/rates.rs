@@ -40,16 +40,17 @@ pub fn momentum_rates(
     //
     // A refined tank (two resolutions, [`crate::sph::refinement`]) has its own pass: each particle
     // searches as far as its widest pair reaches, and each pair takes the kernel of its mean smoothing
-    // length. It is built for the Riemann scheme without shifting only (checked with the setup).
+    // length. It is built for the Riemann scheme only (checked with the setup).
     let need_grad = !s.riemann || s.shifting;
     let viscous = !s.riemann && s.alpha != 0.0;
     lists.kernel = Some(PairKernel::new(kernel, pt.multi_resolution()));
     if pt.multi_resolution() {
-        assert!(
-            s.riemann && !need_grad,
-            "a refined tank needs the Riemann scheme without shifting"
-        );
-        return momentum_pass::<true, false, false, true>(grid, lists, pt, kernel, s);
+        assert!(s.riemann, "a refined tank needs the Riemann scheme");
+        return if need_grad {
+            momentum_pass::<true, true, false, true>(grid, lists, pt, kernel, s)
+        } else {
+            momentum_pass::<true, false, false, true>(grid, lists, pt, kernel, s)
+        };
     }
     match (s.riemann, need_grad, viscous) {
         (true, false, _) => momentum_pass::<true, false, false, false>(grid, lists, pt, kernel, s),

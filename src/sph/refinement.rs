@@ -16,8 +16,9 @@
 //! keep their mass: the interface is Lagrangian, and the band is wide enough that the water near the
 //! body, where the jet and the pressure peak are, stays at the base resolution for the whole run.
 //!
-//! Refinement needs the Riemann pair terms (their dissipation uses r_ij and the volumes only) and no
-//! particle shifting (whose concentration gradient assumes one spacing).
+//! Refinement needs the Riemann pair terms (their dissipation uses r_ij and the volumes only). Particle
+//! shifting works with it, each pair with its own kernel and each particle with its own spacing
+//! ([`crate::sph::shifting`]).
 
 use crate::sph::eos::Eos;
 use crate::sph::kernel::WendlandC2;

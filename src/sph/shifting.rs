@@ -23,6 +23,13 @@
 //! delta-SPH term, rho_i <- rho_i + dr_i . \<grad rho\>_i (first-order Taylor correction, Lind et al. 2012,
 //! J. Comput. Phys. 231, 1499-1523, eq. 14); velocities are not corrected.
 //!
+//! In a refined tank ([`crate::sph::refinement`]) each pair takes the kernel of its mean smoothing
+//! length h_ij, as in the momentum and continuity sums, and the particle's own spacing and smoothing
+//! length set the rest: (2h)^2 and the cap use h_i and dp_i = dp 2^level_i, and the anti-clustering
+//! ratio is W_ij(r) / W_ij(dp_ij) with dp_ij = dp h_ij / h, the mean spacing of the pair (the spacing at
+//! which a lattice of the pair's mean resolution would sit). With one resolution this is the formula
+//! above.
+//!
 //! Every particle's displacement is a gather over its own neighbour list in the fixed list order, so the
 //! result does not depend on the number of threads.
 
@@ -119,9 +126,12 @@ impl Shifting {
         self.normal = normal;
         // Pass 2: displacements.
         let h = kernel.h();
-        let coeff = cfl_mach * (2.0 * h) * (2.0 * h);
-        let w_dp = kernel.w(dp);
-        let cap = MAX_SHIFT_DP * dp;
+        // W_ij(dp_ij) of the pairs of levels (0, 0), (0, 1) and (1, 1), index l_i + l_j, with the pair's
+        // mean spacing dp_ij = dp h_ij / h (see the module doc).
+        let w_ref = [(0, 0), (0, 1), (1, 1)].map(|(a, b)| {
+            let k = at.kernel.pair(a, b);
+            k.w(dp * k.h() / h)
+        });
         let (lambda, normal) = (&self.lambda, &self.normal);
         self.shift
             .par_chunks_mut(LIST_CHUNK)
@@ -135,12 +145,15 @@ impl Shifting {
                         continue;
                     }
                     let (yi, zi) = (pt.y[i], pt.z[i]);
+                    let li = pt.level[i];
+                    let scale = f64::from(1u32 << li);
                     let mut near_surface = lambda[i] < LAMBDA_SURFACE;
                     let (mut sy, mut sz) = (0.0, 0.0);
                     for e in at.of(c, k, i) {
                         let j = e.j;
                         let (dy, dz) = e.offset(yi, zi, &pt.y, &pt.z);
-                        let q = kernel.w(e.r) / w_dp;
+                        let lj = pt.level[j];
+                        let q = at.kernel.pair(li, lj).w(e.r) / w_ref[usize::from(li + lj)];
                         let q2 = q * q;
                         let fac = (1.0 + R_CLUSTER * q2 * q2) * e.f * pt.vol[j];
                         sy += fac * dy;
@@ -149,7 +162,11 @@ impl Shifting {
                             near_surface = true;
                         }
                     }
-                    let (mut dy, mut dz) = (-coeff * sy, -coeff * sz);
+                    let two_h = 2.0 * h * scale;
+                    let (mut dy, mut dz) = (
+                        -cfl_mach * two_h * two_h * sy,
+                        -cfl_mach * two_h * two_h * sz,
+                    );
                     if near_surface {
                         let n = normal[i];
                         let dn = dy * n[0] + dz * n[1];
@@ -157,6 +174,7 @@ impl Shifting {
                         dz -= dn * n[1];
                     }
                     let m = dy.hypot(dz);
+                    let cap = MAX_SHIFT_DP * dp * scale;
                     if m > cap {
                         dy *= cap / m;
                         dz *= cap / m;
