@@ -551,6 +551,10 @@ pub fn run(
             .overrides
             .divergence_correction
             .unwrap_or(crate::sph::case::DEFAULT_DIVERGENCE_CORRECTION),
+        "shifting": s
+            .overrides
+            .shifting
+            .unwrap_or(crate::sph::case::DEFAULT_SHIFTING),
         "sensor_method": s.overrides.sensor_method.unwrap_or(DESIGN_SENSOR_METHOD),
         "convergence_levels": s.study.levels,
         "convergence_ratio": s.study.ratio,

@@ -229,6 +229,7 @@ pub fn run(a: AssessArgs) -> Result<()> {
             particles_per_half_beam: a.particles_per_half_beam,
             refinement: a.sph.refinement(),
             divergence_correction: a.sph.divergence_correction(),
+            shifting: a.sph.shifting(),
             sensor_method: a.sensor_method,
             ..Default::default()
         },

@@ -177,6 +177,7 @@ fn overrides(n: &Numerics, c: &Common) -> Overrides {
         mirror: n.full_domain.then_some(false),
         refinement: n.sph.refinement(),
         divergence_correction: n.sph.divergence_correction(),
+        shifting: n.sph.shifting(),
         filter_cutoff_hz: c.filter_hz,
         sensor_method: c.sensor_method,
         ..Default::default()
@@ -200,6 +201,7 @@ fn settings(n: Option<&Numerics>, c: &Common) -> serde_json::Value {
         v["tank"] = serde_json::json!(n.sph.tank);
         v["refined_tank"] = serde_json::json!(n.sph.refined_tank);
         v["divergence_correction"] = serde_json::json!(n.sph.divergence_correction);
+        v["shifting"] = serde_json::json!(n.sph.shifting);
     }
     v
 }
