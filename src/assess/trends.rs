@@ -384,11 +384,16 @@ pub fn ochi(a: &Assessment) -> Result<Validation> {
         source: SOURCE.into(),
     });
     let speed = SpeedTrend::of(a);
+    let least = speed.least_shift();
+    let least = if least.is_finite() {
+        format!("at least {least:.3} Lpp (half the station spacing)")
+    } else {
+        "at least half the station spacing (one station assessed: no spacing)".to_string()
+    };
     out.trend_checks.push(TrendCheck {
         check: format!(
             "the station of the maximum pressure moves aft (larger fraction of Lpp) as speed rises: never \
-             forward between two speeds, and at least {:.3} Lpp (half the station spacing) aft overall",
-            speed.least_shift()
+             forward between two speeds, and {least} aft overall"
         ),
         verdict: speed.found().label(),
         detail: format!("{}: {}", speed.finding(), speed.detail()),
