@@ -15,16 +15,18 @@
 mod common;
 
 use common::sph::{ZHAO_VELOCITY, force_difference, quiet, zhao_wedge};
-use slamtool::sph::{self, MotionSpec, Overrides};
+use slamtool::sph::{self, MotionSpec, Overrides, Setup};
 
-#[test]
-fn zhao_force_in_the_refined_tank_matches_the_uniform_one() {
+/// The Zhao case at 20 particles per half-beam (prescribed velocity, to 25 ms) in a uniform and in a
+/// refined tank with the same sound speed, `shifting` as given.
+fn zhao_uniform_and_refined(shifting: Option<bool>) -> (Setup, Setup) {
     let table = ZHAO_VELOCITY.iter().map(|r| [r[0] * 1e-3, r[1]]).collect();
     let motion = MotionSpec::Prescribed { table };
     let o = Overrides {
         particles_per_half_beam: Some(20.0),
         t_end: Some(0.025),
         refinement: Some(false),
+        shifting,
         ..Default::default()
     };
     let uniform = sph::case::resolve("uniform", &zhao_wedge(), &motion, Vec::new(), &o).unwrap();
@@ -40,6 +42,12 @@ fn zhao_force_in_the_refined_tank_matches_the_uniform_one() {
         },
     )
     .unwrap();
+    (uniform, refined)
+}
+
+#[test]
+fn zhao_force_in_the_refined_tank_matches_the_uniform_one() {
+    let (uniform, refined) = zhao_uniform_and_refined(None);
     assert!(refined.refinement.is_some());
     assert_eq!(refined.dp, uniform.dp);
     let a = sph::run(uniform, &quiet()).unwrap();
@@ -88,28 +96,7 @@ fn a_refined_tank_needs_the_riemann_scheme() {
 /// the whole history by no more than 1.5 times what that 1 % change of the sound speed does.
 #[test]
 fn shifting_in_the_refined_tank_matches_the_uniform_one() {
-    let table = ZHAO_VELOCITY.iter().map(|r| [r[0] * 1e-3, r[1]]).collect();
-    let motion = MotionSpec::Prescribed { table };
-    let o = Overrides {
-        particles_per_half_beam: Some(20.0),
-        t_end: Some(0.025),
-        refinement: Some(false),
-        shifting: Some(true),
-        ..Default::default()
-    };
-    let uniform = sph::case::resolve("uniform", &zhao_wedge(), &motion, Vec::new(), &o).unwrap();
-    let refined = sph::case::resolve(
-        "refined",
-        &zhao_wedge(),
-        &motion,
-        Vec::new(),
-        &Overrides {
-            refinement: Some(true),
-            c0: Some(uniform.c0),
-            ..o
-        },
-    )
-    .unwrap();
+    let (uniform, refined) = zhao_uniform_and_refined(Some(true));
     assert!(refined.refinement.is_some() && refined.shifting);
     let mut faster = uniform.clone();
     faster.c0 *= 1.01;
