@@ -105,9 +105,10 @@ fn a_constant_speed_wedge_peak_is_not_the_contact_spike() {
     }
 }
 
-/// A sensor narrower than two particle spacings is integrated over two spacings, and the summary says so.
+/// A sensor narrower than the narrowest span (`MIN_WIDTH_DP` particle spacings) is integrated over that
+/// span, and the summary says so.
 #[test]
-fn narrow_sensors_are_integrated_over_two_spacings_with_a_warning() {
+fn narrow_sensors_are_integrated_over_the_narrowest_span_with_a_warning() {
     let side = 0.1 / 30f64.to_radians().cos();
     let s = wedge_study(vec![
         sph::SensorSpec {
@@ -118,16 +119,19 @@ fn narrow_sensors_are_integrated_over_two_spacings_with_a_warning() {
         sph::SensorSpec {
             name: "wide".into(),
             s_m: 0.3 * side,
-            width_m: 0.02,
+            width_m: 0.03,
         },
     ]);
     let dp = s.dp_m;
     let narrow = &s.sensors[0];
     let span = narrow.integration_span_m.unwrap();
-    assert!((span[1] - span[0] - 2.0 * dp).abs() < 1e-12, "{span:?}");
+    assert!(
+        (span[1] - span[0] - sph::sensors::MIN_WIDTH_DP * dp).abs() < 1e-12,
+        "{span:?}"
+    );
     assert!((0.5 * (span[0] + span[1]) - 0.5 * side).abs() < 1e-12);
     let wide = s.sensors[1].integration_span_m.unwrap();
-    assert!((wide[1] - wide[0] - 0.02).abs() < 1e-12);
+    assert!((wide[1] - wide[0] - 0.03).abs() < 1e-12);
     let warned: Vec<&String> = s
         .warnings
         .iter()

@@ -5,8 +5,10 @@
 //! averaged over the sensor and filtered at 2 kHz, `slamtool::validate::wedge_references::wagner_like_for_like_cp`).
 //! The validation cases now compare with the nonlinear similarity solution instead (issue 28); against it
 //! the corrected 30 deg sensors read 0.986 1.055 1.088 1.070 1.101 1.091 1.091 (mean error 7.3 %) and the
-//! uncorrected ones 1.038 1.112 1.130 1.165 1.182 1.113 0.788, measured when the reference changed. The
-//! assertions below keep the claim they were stated with: agreement with Wagner's composite distribution.
+//! uncorrected ones 1.038 1.112 1.130 1.165 1.182 1.113 0.788, measured when the reference changed (2 dp
+//! sensor spans). Since 2026-11-27 sensors narrower than 4 dp are integrated over 4 dp, and the 30 deg
+//! assertions compare with the similarity solution over that span (see the test's documentation); the
+//! table below is from before, with 2 dp spans and Wagner's composite distribution.
 //!
 //! Measured (sensor peak / like-for-like reference, first to last sensor):
 //!
@@ -72,6 +74,8 @@ fn run(deadrise_deg: f64, n: f64, corrected: bool) -> WedgeRun {
 struct SensorPeak {
     cp: f64,
     ratio: f64,
+    /// Its ratio to the similarity solution over the same span, filtered alike (issue 28's reference).
+    similarity_ratio: f64,
     late_dp: f64,
 }
 
@@ -82,17 +86,28 @@ fn sensor_peaks(run: &WedgeRun) -> Vec<SensorPeak> {
     h.sensors
         .iter()
         .zip(&setup.sensors)
-        .map(|(col, s)| {
+        .zip(&run.result.summary.sensors)
+        .map(|((col, s), named)| {
             let peak = summarise(&h.t, col, Some(CUTOFF_HZ))
                 .unwrap()
                 .filtered
                 .unwrap();
             let cp = peak.value / q;
+            let (centre, width) = wedge_references::reference_span(s, named);
             let like = wedge_references::wagner_like_for_like_cp(
                 run.beta,
                 SPEED,
-                s.s_m,
-                s.width_m,
+                centre,
+                width,
+                setup.t_end,
+                CUTOFF_HZ,
+            )
+            .unwrap();
+            let (similarity, _) = wedge_references::like_for_like(
+                run.beta,
+                SPEED,
+                centre,
+                width,
                 setup.t_end,
                 CUTOFF_HZ,
             )
@@ -101,24 +116,26 @@ fn sensor_peaks(run: &WedgeRun) -> Vec<SensorPeak> {
             SensorPeak {
                 cp,
                 ratio: cp / like,
+                similarity_ratio: cp / similarity,
                 late_dp: (peak.time - t_ref) * SPEED / setup.dp,
             }
         })
         .collect()
 }
 
-/// Sensor peak Cp / like-for-like reference Cp of each sensor, and the largest sensor peak Cp / Wagner's
-/// Cp_max, at 40 particles over the half-beam.
-fn sensor_ratios(deadrise_deg: f64, corrected: bool) -> (Vec<f64>, f64) {
+/// Sensor peak Cp / Wagner's composite like for like, the largest sensor peak Cp / Wagner's Cp_max, and
+/// sensor peak Cp / the similarity solution like for like, at 40 particles over the half-beam.
+fn sensor_ratios(deadrise_deg: f64, corrected: bool) -> (Vec<f64>, f64, Vec<f64>) {
     let run = run(deadrise_deg, 40.0, corrected);
     let peaks = sensor_peaks(&run);
     let ratios: Vec<f64> = peaks.iter().map(|p| p.ratio).collect();
+    let sim: Vec<f64> = peaks.iter().map(|p| p.similarity_ratio).collect();
     let largest = peaks.iter().map(|p| p.cp).fold(0.0, f64::max);
     let bound = largest / wagner::peak_pressure_coefficient(run.beta).unwrap();
     eprintln!(
-        "{deadrise_deg} deg, corrected {corrected}: sensor / like-for-like {ratios:.3?}, largest / Wagner Cp_max {bound:.3}"
+        "{deadrise_deg} deg, corrected {corrected}: sensor / like-for-like {ratios:.3?}, / similarity {sim:.3?}, largest / Wagner Cp_max {bound:.3}"
     );
-    (ratios, bound)
+    (ratios, bound, sim)
 }
 
 /// Measurement sweep behind the table above (asserts nothing): for each deadrise in
@@ -162,13 +179,19 @@ fn convergence_sweep() {
     }
 }
 
-/// At 30 deg the corrected sensors agree with Wagner's composite distribution: mean error below 5 %,
-/// every sensor within 15 %, and the last sensor (in the lift-off phase without the correction) within
-/// 5 % and closer to the reference than the uncorrected one.
+/// At 30 deg the corrected sensors agree with the similarity solution over the same span (issue 28's
+/// like-for-like reference): mean error below 5 %, every sensor within 15 %, and the last sensor (in
+/// the lift-off phase without the correction) within 5 % and closer to the reference than the
+/// uncorrected one. The tolerances are those first stated against Wagner's composite distribution; the
+/// reference changed on 2026-11-27, when sensors narrower than 4 dp came to be integrated over 4 dp
+/// (`sph::sensors::MIN_WIDTH_DP`): against Wagner's composite, which carries more load than the nonlinear
+/// flow, the corrected sensors then read 0.83-0.95 (mean error 11.7 %); the agreement within 5 % that
+/// this test first asserted was the 2 dp span's over-read cancelling that excess. Against the similarity
+/// solution: corrected 0.96-1.06, uncorrected 1.02-1.08 with the last sensor at 0.89.
 #[test]
 fn the_corrected_divergence_removes_the_jet_root_lift_off_at_30_deg() {
-    let (plain, _) = sensor_ratios(30.0, false);
-    let (corr, _) = sensor_ratios(30.0, true);
+    let (_, _, plain) = sensor_ratios(30.0, false);
+    let (_, _, corr) = sensor_ratios(30.0, true);
     let mean = corr.iter().map(|r| (r - 1.0).abs()).sum::<f64>() / corr.len() as f64;
     assert!(mean < 0.05, "mean error {mean}");
     assert!(corr.iter().all(|r| (r - 1.0).abs() < 0.15), "{corr:?}");
@@ -184,8 +207,8 @@ fn the_corrected_divergence_removes_the_jet_root_lift_off_at_30_deg() {
 /// case `wedge40-pressure-bound`, a known failure); the correction brings the largest to within 10 %.
 #[test]
 fn the_corrected_divergence_removes_the_overshoot_at_40_deg() {
-    let (_, plain) = sensor_ratios(40.0, false);
-    let (_, corr) = sensor_ratios(40.0, true);
+    let (_, plain, _) = sensor_ratios(40.0, false);
+    let (_, corr, _) = sensor_ratios(40.0, true);
     assert!(corr < 1.1, "largest sensor peak / Wagner Cp_max {corr}");
     assert!(corr < plain, "corrected {corr}, uncorrected {plain}");
 }

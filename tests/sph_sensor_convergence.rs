@@ -92,20 +92,22 @@ fn peak_errors(deadrise_deg: f64, n_half: f64, method: SensorMethod) -> PeakErro
         like: 0.0,
         time: 0.0,
     };
-    for (col, s) in h.sensors.iter().zip(sens) {
+    for ((col, s), named) in h.sensors.iter().zip(sens).zip(&run.result.summary.sensors) {
         let (p, t) = filtered_peak(&h.t, col);
         let cp = p / q;
+        // The reference over the span the SPH sensor integrates (at least 4 dp since 2026-11-27).
+        let (centre, width) = slamtool::validate::wedge_references::reference_span(s, named);
         let (cp_like, t_ref) = if wagner_ref {
             (
                 slamtool::validate::wedge_references::wagner_like_for_like_cp(
-                    beta, run.speed, s.s_m, s.width_m, t_end, CUTOFF_HZ,
+                    beta, run.speed, centre, width, t_end, CUTOFF_HZ,
                 )
                 .unwrap(),
                 s.s_m * beta.sin() / (std::f64::consts::FRAC_PI_2 * run.speed),
             )
         } else {
             (
-                like_for_like_cp(beta, run.speed, s.s_m, s.width_m, t_end),
+                like_for_like_cp(beta, run.speed, centre, width, t_end),
                 slamtool::validate::wedges::reference_peak_time(beta, run.speed, s.s_m),
             )
         };
@@ -143,20 +145,21 @@ fn peak_errors(deadrise_deg: f64, n_half: f64, method: SensorMethod) -> PeakErro
 ///
 /// The time of the peak is right from 25 particles on (the force is where the fluid pushes, with no
 /// extrapolation lag); the value falls from 15 to 40 particles at both angles but not further at 20 deg
-/// (60 particles: every sensor 5-15 % low, the last one 28 % low). Asserted (15 and 40 particles, about
-/// half a minute): the like-for-like Cp error and the peak-time error fall at both angles, and the
-/// 40-particle Cp error is below 15 %.
+/// (60 particles: every sensor 5-15 % low, the last one 28 % low); measured with 2 dp sensor spans.
+///
+/// Asserted (15 and 40 particles, about half a minute): the peak-time error falls at both angles, and
+/// the 40-particle like-for-like Cp error is below 15 %. Until 2026-11-27 it also asserted that the Cp
+/// error falls from 15 to 40 particles. Since sensors narrower than 4 dp are integrated over 4 dp
+/// (`sph::sensors::MIN_WIDTH_DP`, with the reference over the same span) the 10 mm sensors are 67 mm
+/// panels at 15 particles and 25 mm at 40, and the error no longer falls at 20 deg (6.8 % at both
+/// levels; 30 deg: 12.8 % -> 8.6 %): at the default numerics it does not converge, as the convergence
+/// table shows (validation case `wedge-convergence-table`, docs/numerics/wedge-convergence.md). That
+/// assertion was dropped, not loosened: the table carries the question now.
 #[test]
 fn sensor_peak_convergence() {
     for deg in [30.0, zhao_faltinsen1993::DEADRISE_DEG] {
         let coarse = peak_errors(deg, 15.0, SensorMethod::ForcePanel);
         let fine = peak_errors(deg, 40.0, SensorMethod::ForcePanel);
-        assert!(
-            fine.like < coarse.like,
-            "{deg} deg: like-for-like Cp error {} -> {}",
-            coarse.like,
-            fine.like
-        );
         assert!(
             fine.time < coarse.time,
             "{deg} deg: peak-time error {} -> {}",

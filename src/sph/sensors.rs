@@ -162,10 +162,20 @@ impl SensorSet {
     }
 }
 
-/// Narrowest span, in particle spacings, over which a sensor's pressure is integrated. A sensor narrower
-/// than about 2 dp reads the noise of single particles: force-panel sensors of 5 mm on a 6.25 mm spacing
-/// read 31 % (30 deg) to 56 % (40 deg) high on a constant-speed wedge, and within 2 % at 2 dp.
-pub const MIN_WIDTH_DP: f64 = 2.0;
+/// Narrowest span, in particle spacings, over which a sensor's pressure is integrated. A force-panel
+/// sensor attributes each fluid particle's force on the wall to the particle's own place along the
+/// contour, while that force comes from the wall within the kernel support radius 2h (3 dp) of the
+/// particle: a panel not much wider than that reads the passage of single particles at the jet root,
+/// and its peak is biased high. Measured on gravity-free constant-speed wedges at 40 particles per
+/// half-beam (the default level; refined tank, Riemann scheme, shifting and corrected divergence),
+/// twelve sensors from 10 % to 75 % of the side, against the similarity solution averaged over the
+/// same span: a 2 dp span read 0.84-1.56 (20 deg) and 1.05-1.29 (30 deg) of the reference, mean
+/// error 13.5 % and 15.9 %; 3 dp, 6.7 % and 6.3 %; 4 dp, 5.4 % and 4.5 % (30 deg: 0.97-1.10). At 80
+/// particles a 10 mm sensor is 3.2 dp wide, and widening it to 4 dp moved the 30 deg mean error from
+/// 3.5 % to 3.8 % (`tests/sph_wedge_convergence.rs`, `CONV_WIDTH_DP`;
+/// docs/numerics/wedge-convergence.md, item 8). (The first value, 2 dp, was chosen against 5 mm
+/// sensors on a 6.25 mm spacing, which read 31-56 % high.)
+pub const MIN_WIDTH_DP: f64 = 4.0;
 
 /// The span of the contour over which a sensor is integrated: its own width about its centre, widened
 /// symmetrically to [`MIN_WIDTH_DP`] dp when narrower, and then moved to lie between the keel and the

@@ -25,6 +25,7 @@ pub mod seakeeping;
 pub mod ships;
 pub mod wedge_bounds;
 pub mod wedge_references;
+pub mod wedge_table;
 pub mod wedges;
 
 use std::time::Instant;

@@ -6,7 +6,7 @@ use std::sync::{Arc, Mutex};
 
 use super::{
     Case, Mode, Outcome, drops, entry_velocities, hermundstad_forcing, ochi_trends, quoted,
-    seakeeping, ships, wedge_bounds, wedges,
+    seakeeping, ships, wedge_bounds, wedge_table, wedges,
 };
 use crate::error::{Error, Result};
 use crate::sph;
@@ -15,6 +15,7 @@ use crate::sph;
 pub const KINDS: &[&str] = &[
     "wedge-similarity",
     "wedge-convergence",
+    "wedge-convergence-table",
     "wedge-force-bounds",
     "wedge-pressure-bound",
     "breder2005-load-ratio",
@@ -112,6 +113,7 @@ pub fn run(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcome> {
     match case.kind.as_str() {
         "wedge-similarity" => wedges::similarity(case, mode, memo),
         "wedge-convergence" => wedges::convergence(case, mode, memo),
+        "wedge-convergence-table" => wedge_table::table(case, mode, memo),
         "wedge-force-bounds" => wedge_bounds::force_bounds(case, mode, memo),
         "wedge-pressure-bound" => wedge_bounds::pressure_bound(case, mode, memo),
         "breder2005-load-ratio" => quoted::breder_load_ratio(case, mode, memo),

@@ -5,7 +5,9 @@
 use super::conditions::WATER_DENSITY;
 use super::drops::window_mean;
 use super::run::Memo;
-use super::wedge_references::{filtered_peak, like_for_like, wagner_like_for_like_cp};
+use super::wedge_references::{
+    filtered_peak, like_for_like, reference_span, wagner_like_for_like_cp,
+};
 use super::wedges::{mean_ratio, ratio_range, wedge_run};
 use super::{Case, Figure, Mode, Outcome, Reference, Series, Table};
 use crate::analytic::logvinovich_mlm::Mlm;
@@ -149,10 +151,17 @@ pub fn pressure_bound(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcome> {
     let mut sim = Vec::new();
     let mut composite = Vec::new();
     let mut rows = Vec::new();
-    for (col, s) in h.sensors.iter().zip(&run.result.summary.setup.sensors) {
+    let summary = &run.result.summary;
+    for ((col, s), named) in h
+        .sensors
+        .iter()
+        .zip(&summary.setup.sensors)
+        .zip(&summary.sensors)
+    {
         let (p, t) = filtered_peak(&h.t, col, cutoff)?;
-        let (cp_ref, _) = like_for_like(run.beta, run.speed, s.s_m, s.width_m, t_end, cutoff)?;
-        let cp_c = wagner_like_for_like_cp(run.beta, run.speed, s.s_m, s.width_m, t_end, cutoff)?;
+        let (centre, width) = reference_span(s, named);
+        let (cp_ref, _) = like_for_like(run.beta, run.speed, centre, width, t_end, cutoff)?;
+        let cp_c = wagner_like_for_like_cp(run.beta, run.speed, centre, width, t_end, cutoff)?;
         pts.push([s.s_m, p / q]);
         sim.push([s.s_m, cp_ref]);
         composite.push([s.s_m, cp_c]);

@@ -16,6 +16,8 @@ use crate::analytic::similarity_sensor::{SensorSpan, similarity_sensor_reference
 use crate::analytic::wagner_pressure::WagnerWedge;
 use crate::error::{Error, Result};
 use crate::loads::peaks::summarise;
+use crate::sph::NamedSummary;
+use crate::sph::sensors::SensorSpec;
 use std::f64::consts::PI;
 
 use super::conditions::WATER_DENSITY;
@@ -52,6 +54,15 @@ pub fn like_for_like(
         Some(cutoff),
     )?;
     Ok((r.peak_pa / (0.5 * WATER_DENSITY * v * v), r.peak_time_s))
+}
+
+/// Centre and width (m) of the contour span a sensor's reference is averaged over: the span the SPH
+/// sensor integrates (its own width, or the narrowest span of [`crate::sph::sensors::integration_span`]
+/// when it is narrower), so that reference and SPH cover the same wall.
+pub fn reference_span(s: &SensorSpec, named: &NamedSummary) -> (f64, f64) {
+    named
+        .integration_span_m
+        .map_or((s.s_m, s.width_m), |[a, b]| (0.5 * (a + b), b - a))
 }
 
 /// The peak Cp of [`like_for_like`].

@@ -11,7 +11,7 @@ use super::run::Memo;
 pub use super::wedge_bounds::mlm_force_coefficient;
 pub(super) use super::wedge_references::filtered_peak;
 pub use super::wedge_references::{
-    like_for_like, like_for_like_cp, reference_peak_time, wagner_like_for_like_cp,
+    like_for_like, like_for_like_cp, reference_peak_time, reference_span, wagner_like_for_like_cp,
 };
 use super::{Case, Figure, Mode, Outcome, Reference, Series, Table};
 use crate::error::{Error, Result};
@@ -115,11 +115,12 @@ fn sensor_errors(case: &Case, deg: f64, n: f64, memo: &Memo) -> Result<(SensorEr
         reference: Vec::new(),
         wagner: Vec::new(),
     };
-    for (col, s) in h.sensors.iter().zip(sens) {
+    for ((col, s), named) in h.sensors.iter().zip(sens).zip(&run.result.summary.sensors) {
         let (p, t) = filtered_peak(&h.t, col, cutoff)?;
         let cp = p / q;
-        let (cp_ref, t_ref) = like_for_like(run.beta, run.speed, s.s_m, s.width_m, t_end, cutoff)?;
-        let cp_w = wagner_like_for_like_cp(run.beta, run.speed, s.s_m, s.width_m, t_end, cutoff)?;
+        let (centre, width) = reference_span(s, named);
+        let (cp_ref, t_ref) = like_for_like(run.beta, run.speed, centre, width, t_end, cutoff)?;
+        let cp_w = wagner_like_for_like_cp(run.beta, run.speed, centre, width, t_end, cutoff)?;
         e.cp += (cp / cp_ref - 1.0).abs() / m;
         e.time += (t / t_ref - 1.0).abs() / m;
         e.rows.push(vec![
