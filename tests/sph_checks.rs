@@ -135,8 +135,9 @@ fn narrow_sensors_are_integrated_over_the_narrowest_span_with_a_warning() {
     let warned: Vec<&String> = s
         .warnings
         .iter()
-        .filter(|w| w.contains("narrower"))
+        .filter(|w| w.starts_with(sph::WIDENED_SENSORS))
         .collect();
     assert_eq!(warned.len(), 1, "{:?}", s.warnings);
-    assert!(warned[0].contains("'narrow'"));
+    assert!(warned[0].contains("narrow (2.0 mm wide"), "{}", warned[0]);
+    assert!(!warned[0].contains("wide (30.0 mm"), "{}", warned[0]);
 }

@@ -82,4 +82,22 @@ fn a_keel_sensor_crossed_in_the_transient_is_resolved_by_a_stage() {
     assert!(side.stage.is_none());
     let (st_side, _) = status(s, "side").unwrap();
     assert_eq!(st_side, ImpactStatus::Resolved);
+    // the list of widened sensors follows the records: both are narrower than 4 dp of the main run, the
+    // keel sensor's stage record is not widened
+    let widened = |s: &sph::RunSummary| -> String {
+        let w: Vec<&String> = s
+            .warnings
+            .iter()
+            .filter(|w| w.starts_with(sph::WIDENED_SENSORS))
+            .collect();
+        assert_eq!(w.len(), 1, "{:?}", s.warnings);
+        w[0].clone()
+    };
+    let main = widened(&plain.summary);
+    assert!(main.contains("keel (") && main.contains("side ("), "{main}");
+    let after = widened(s);
+    assert!(
+        !after.contains("keel (") && after.contains("side ("),
+        "{after}"
+    );
 }

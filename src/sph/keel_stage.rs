@@ -401,6 +401,14 @@ pub fn run_staged(setup: Setup, opts: &RunOptions, study: StudyPlan) -> Result<R
         }
         result.summary.stages.push(rec);
     }
+    // The list of widened sensors, now with the records the stages gave.
+    let summary = &mut result.summary;
+    summary
+        .warnings
+        .retain(|w| !w.starts_with(crate::sph::WIDENED_SENSORS));
+    if let Some(w) = crate::sph::widened_sensor_warning(&summary.sensors) {
+        summary.warnings.push(w);
+    }
     if let Some(dir) = &opts.out_dir {
         let json = serde_json::to_string_pretty(&result.summary).expect("summary serialises");
         crate::files::write_text_atomic(&dir.join("summary.json"), &json)?;

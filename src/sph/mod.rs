@@ -308,7 +308,7 @@ fn summarise_run(sim: &Simulation, wall_s: f64, stopped: Option<String>) -> Resu
     let (mut wf, mut wft, mut wp) = (None, None, None);
     let mut warnings: Vec<String> = single_phase_warning(sim)
         .into_iter()
-        .chain(narrow_sensor_warnings(sim))
+        .chain(widened_sensor_warning(&sensors))
         .collect();
     if let Some(sec) = sim.section() {
         match generalised_wagner::estimate(sec.half_points(), &h.t, &h.v_down, s.rho0) {
@@ -378,33 +378,44 @@ fn contact_transient_end(h: &History, dp: f64) -> f64 {
         .map_or(h.t.last().copied().unwrap_or(0.0), |k| h.t[k])
 }
 
-/// A warning for each sensor narrower than [`sensors::MIN_WIDTH_DP`] dp whose integration span is more
-/// than 10 % wider than the sensor, with the span it is integrated over instead.
-fn narrow_sensor_warnings(sim: &Simulation) -> Vec<String> {
-    let dp = sim.setup.dp;
-    sim.setup
-        .sensors
+/// Opening of the warning that lists the sensors integrated over a span wider than themselves
+/// ([`widened_sensor_warning`]).
+pub const WIDENED_SENSORS: &str = "sensors integrated over a span wider than themselves";
+
+/// One warning listing every sensor whose integration span is more than 10 % wider than the sensor (it
+/// is narrower than [`sensors::MIN_WIDTH_DP`] spacings of the run that recorded it: the main run, or
+/// the keel stage whose record it took), with the span; `None` when there is none. A span within 10 %
+/// of the sensor's width reads the same pressure and is not listed.
+pub fn widened_sensor_warning(sensors: &[NamedSummary]) -> Option<String> {
+    let list: Vec<String> = sensors
         .iter()
-        .zip(sim.sensors().spans())
-        // a span within 10 % of the sensor's width reads the same pressure: no warning for it
-        .filter(|(s, span)| {
-            s.width_m < sensors::MIN_WIDTH_DP * dp && span[1] - span[0] > 1.1 * s.width_m
+        .filter_map(|q| {
+            let (w, [a, b]) = (q.width_m?, q.integration_span_m?);
+            (b - a > 1.1 * w).then(|| {
+                let stage = q
+                    .stage
+                    .map_or(String::new(), |r| format!(", keel stage {}", r.stage));
+                format!(
+                    "{} ({:.1} mm wide, over {:.1} mm: s = {:.4}-{:.4} m{stage})",
+                    q.name,
+                    w * 1e3,
+                    (b - a) * 1e3,
+                    a,
+                    b
+                )
+            })
         })
-        .map(|(s, span)| {
-            format!(
-                "sensor '{}' is {:.1} mm wide, narrower than {} particle spacings ({:.1} mm): a span that \
-                 narrow reads the noise of single particles, so its pressure is integrated over {:.1} mm \
-                 (s = {:.4}-{:.4} m from the keel)",
-                s.name,
-                s.width_m * 1e3,
-                sensors::MIN_WIDTH_DP,
-                sensors::MIN_WIDTH_DP * dp * 1e3,
-                (span[1] - span[0]) * 1e3,
-                span[0],
-                span[1]
-            )
-        })
-        .collect()
+        .collect();
+    (!list.is_empty()).then(|| {
+        format!(
+            "{WIDENED_SENSORS}: {}. A force panel narrower than {} particle spacings over-reads the \
+             passage of single particles at the jet root, so each is integrated over {} spacings about its \
+             centre (docs/guide/numerics.md)",
+            list.join("; "),
+            sensors::MIN_WIDTH_DP,
+            sensors::MIN_WIDTH_DP
+        )
+    })
 }
 
 /// Deadrise below which single-phase SPH is known to over-predict the peak pressure.
