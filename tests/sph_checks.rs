@@ -1,6 +1,8 @@
 //! Checks around an SPH run: settings refused before the run, and caveats attached to its summary (the
 //! single-phase, no-air limit at low deadrise).
 
+mod common;
+
 use slamtool::sph::{self, MotionSpec, Overrides, RunOptions, body::Section};
 
 fn short_wedge_run(deadrise_deg: f64) -> sph::RunSummary {
@@ -132,12 +134,7 @@ fn narrow_sensors_are_integrated_over_the_narrowest_span_with_a_warning() {
     assert!((0.5 * (span[0] + span[1]) - 0.5 * side).abs() < 1e-12);
     let wide = s.sensors[1].integration_span_m.unwrap();
     assert!((wide[1] - wide[0] - 0.03).abs() < 1e-12);
-    let warned: Vec<&String> = s
-        .warnings
-        .iter()
-        .filter(|w| w.starts_with(sph::WIDENED_SENSORS))
-        .collect();
-    assert_eq!(warned.len(), 1, "{:?}", s.warnings);
-    assert!(warned[0].contains("narrow (2.0 mm wide"), "{}", warned[0]);
-    assert!(!warned[0].contains("wide (30.0 mm"), "{}", warned[0]);
+    let warned = common::sph::widened_sensor_warning(&s);
+    assert!(warned.contains("narrow (2.0 mm wide"), "{warned}");
+    assert!(!warned.contains("wide (30.0 mm"), "{warned}");
 }

@@ -2,6 +2,9 @@
 //! transient is resolved by a fine run of the section's lower part, at the spacing that puts
 //! `PARTICLES_ACROSS_RESOLVED` particles across the wetted half-width at its crossing.
 
+mod common;
+
+use common::sph::widened_sensor_warning;
 use slamtool::loads::anatomy::ImpactStatus;
 use slamtool::sph::keel_stage::{PARTICLES_ACROSS_RESOLVED, STAGE_BREADTH};
 use slamtool::sph::{self, MotionSpec, Overrides, SensorSpec, StudyPlan, body::Section};
@@ -84,18 +87,9 @@ fn a_keel_sensor_crossed_in_the_transient_is_resolved_by_a_stage() {
     assert_eq!(st_side, ImpactStatus::Resolved);
     // the list of widened sensors follows the records: both are narrower than 4 dp of the main run, the
     // keel sensor's stage record is not widened
-    let widened = |s: &sph::RunSummary| -> String {
-        let w: Vec<&String> = s
-            .warnings
-            .iter()
-            .filter(|w| w.starts_with(sph::WIDENED_SENSORS))
-            .collect();
-        assert_eq!(w.len(), 1, "{:?}", s.warnings);
-        w[0].clone()
-    };
-    let main = widened(&plain.summary);
+    let main = widened_sensor_warning(&plain.summary);
     assert!(main.contains("keel (") && main.contains("side ("), "{main}");
-    let after = widened(s);
+    let after = widened_sensor_warning(s);
     assert!(
         !after.contains("keel (") && after.contains("side ("),
         "{after}"

@@ -436,6 +436,15 @@ impl Case {
             .filter(|_| self.known_failure_modes.contains(&mode))
     }
 
+    /// The list of resolution levels (particles over the half-beam) for the mode: `levels_quick` or
+    /// `levels_full`.
+    pub fn levels(&self, mode: Mode) -> Result<Vec<f64>> {
+        self.numbers(match mode {
+            Mode::Quick => "levels_quick",
+            Mode::Full => "levels_full",
+        })
+    }
+
     pub fn particles(&self, mode: Mode) -> Result<f64> {
         match (self.resolution, mode) {
             (Some((q, _)), Mode::Quick) => Ok(q),

@@ -22,10 +22,10 @@
 //! sensors below `side_fraction_checked` of the side, both methods, every deadrise, at `default_level`
 //! particles per half-beam.
 
-use std::f64::consts::PI;
-
+use super::drops::window_mean;
 use super::run::Memo;
 use super::wedge_references::{filtered_peak, like_for_like, reference_span};
+use super::wedges::chine_wetting_time;
 use super::{Case, Figure, Mode, Outcome, Reference, Series, Table};
 use crate::analytic::similarity_sensor::solution;
 use crate::error::{Error, Result};
@@ -94,7 +94,7 @@ fn wedge(
 ) -> Result<(Vec<Row>, f64)> {
     let beta = deg.to_radians();
     let side = p.b / beta.cos();
-    let t_wet = 2.0 / PI * p.b * beta.tan() / p.speed;
+    let t_wet = chine_wetting_time(beta, p.b, p.speed);
     let key = format!(
         "wedge-table/{deg}/{}/{}/{}/{}/{:?}/{}/{method:?}/{n}",
         p.b, p.speed, p.sensors, p.width, p.span, p.t_frac
@@ -146,19 +146,10 @@ fn wedge(
             end_of_run: t_ref >= 0.99 * t_end,
         });
     }
+    // F / (rho V^3 t C_F), averaged over t in [0.5, 0.9] t_end.
     let cf = super::conditions::WATER_DENSITY * p.speed.powi(3) * sim.force;
-    let (mut sum, mut count) = (0.0, 0usize);
-    for (&t, &f) in h.t.iter().zip(&h.fz) {
-        if t >= 0.5 * t_end && t <= 0.9 * t_end && t > 0.0 {
-            sum += f / (cf * t);
-            count += 1;
-        }
-    }
-    let force = if count > 0 {
-        sum / count as f64
-    } else {
-        f64::NAN
-    };
+    let ratio: Vec<f64> = h.t.iter().zip(&h.fz).map(|(&t, &f)| f / (cf * t)).collect();
+    let force = window_mean(&h.t, &ratio, 0.5 * t_end, 0.9 * t_end);
     Ok((rows, force))
 }
 
@@ -170,10 +161,7 @@ fn mean_error(rows: &[Row]) -> f64 {
 pub fn table(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcome> {
     let p = Params::read(case)?;
     let degs = case.numbers("deadrises_deg")?;
-    let levels = case.numbers(match mode {
-        Mode::Quick => "levels_quick",
-        Mode::Full => "levels_full",
-    })?;
+    let levels = case.levels(mode)?;
     let default_level = case.number("default_level")?;
     let checked_below = case.number("side_fraction_checked")?;
     if !levels.contains(&default_level) {

@@ -230,10 +230,7 @@ pub(super) fn ratio_range(a: &[[f64; 2]], b: &[[f64; 2]]) -> (f64, f64) {
 /// against the error at the next coarser level (it must fall).
 pub fn convergence(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcome> {
     let deg = case.number("deadrise_deg")?;
-    let levels = case.numbers(match mode {
-        Mode::Quick => "levels_quick",
-        Mode::Full => "levels_full",
-    })?;
+    let levels = case.levels(mode)?;
     if levels.len() < 2 {
         return Err(Error::Invalid(format!(
             "{}: a convergence case needs at least two levels",

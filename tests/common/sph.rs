@@ -149,3 +149,15 @@ pub fn force_difference(reference: &sph::RunResult, other: &sph::RunResult) -> (
     let diff = (0..n).map(|k| (fr[k] - fo[k]).abs()).fold(0.0, f64::max);
     (diff / peak_r, peak_o / peak_r)
 }
+
+/// The one warning of a run summary that lists its widened sensors ([`sph::WIDENED_SENSORS`]); fails
+/// the test when there is not exactly one.
+pub fn widened_sensor_warning(s: &sph::RunSummary) -> String {
+    let w: Vec<&String> = s
+        .warnings
+        .iter()
+        .filter(|w| w.starts_with(sph::WIDENED_SENSORS))
+        .collect();
+    assert_eq!(w.len(), 1, "{:?}", s.warnings);
+    w[0].clone()
+}
