@@ -686,6 +686,42 @@ fn validate_says_why_a_case_could_not_be_computed() {
     );
 }
 
+/// The wedge convergence table's parameters are checked before any run, with the case file, line and
+/// column of the bad one.
+#[test]
+fn validate_refuses_a_wedge_table_with_parameters_out_of_range() {
+    let (_t, d) = setup();
+    std::fs::create_dir_all(d.join("cases")).unwrap();
+    let case =
+        std::fs::read_to_string(Path::new(ROOT).join("validation/wedge-convergence-table.toml"))
+            .unwrap()
+            .replace("\"../data/reference/", &format!("\"{ROOT}/data/reference/"));
+    for (from, to, says) in [
+        (
+            "t_frac = 0.92",
+            "t_frac = 1.5",
+            "`t_frac` is 1.5: it must be between 0 and 1",
+        ),
+        (
+            "speed_m_per_s = 5.0",
+            "speed_m_per_s = -5.0",
+            "`speed_m_per_s` is -5: it must be above 0",
+        ),
+        (
+            "span_first = 0.10",
+            "span_first = 0.90",
+            "`span_first` (0.9) must lie below `span_last`",
+        ),
+    ] {
+        assert!(case.contains(from), "{from}");
+        std::fs::write(d.join("cases/bad.toml"), case.replace(from, to)).unwrap();
+        let o = slamtool(&["validate", "--cases-dir", "cases", "-o", "v"], &d);
+        assert_eq!(o.status.code(), Some(6), "{}", stderr(&o));
+        let text = format!("{}{}", String::from_utf8_lossy(&o.stdout), stderr(&o));
+        assert!(text.contains(says) && !text.contains("panicked"), "{text}");
+    }
+}
+
 #[test]
 fn report_from_another_folder_finds_the_hull() {
     let (_t, d) = setup();

@@ -345,6 +345,21 @@ impl Case {
         Ok(x)
     }
 
+    /// A number parameter that must lie in the open interval (lo, hi) (`hi` infinite for "positive");
+    /// outside it, an error located at the parameter says what it must be.
+    pub fn number_between(&self, key: &str, lo: f64, hi: f64) -> Result<f64> {
+        let x = self.number(key)?;
+        if x > lo && x < hi {
+            return Ok(x);
+        }
+        let must = if hi.is_infinite() {
+            format!("above {lo}")
+        } else {
+            format!("between {lo} and {hi} (exclusive)")
+        };
+        Err(self.param_error(key, format!("`{key}` is {x}: it must be {must}")))
+    }
+
     /// A list of numbers.
     pub fn numbers(&self, key: &str) -> Result<Vec<f64>> {
         let v = self.params.get(key).ok_or_else(|| {

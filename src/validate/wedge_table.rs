@@ -65,21 +65,34 @@ struct Params {
 
 impl Params {
     fn read(case: &Case) -> Result<Self> {
-        let sensors = case.number("sensors")?;
-        if sensors < 2.0 || sensors.fract() != 0.0 {
+        let sensors = case.number_between("sensors", 1.0, f64::INFINITY)?;
+        if sensors.fract() != 0.0 {
             return Err(Error::Invalid(format!(
                 "{}: `sensors` must be a whole number of at least 2",
                 case.path.display()
             )));
         }
+        let span = [
+            case.number_between("span_first", 0.0, 1.0)?,
+            case.number_between("span_last", 0.0, 1.0)?,
+        ];
+        if span[0] >= span[1] {
+            return Err(Error::Invalid(format!(
+                "{}: `span_first` ({}) must lie below `span_last` ({})",
+                case.path.display(),
+                span[0],
+                span[1]
+            )));
+        }
+        let inf = f64::INFINITY;
         Ok(Params {
-            b: case.number("half_beam_m")?,
-            speed: case.number("speed_m_per_s")?,
+            b: case.number_between("half_beam_m", 0.0, inf)?,
+            speed: case.number_between("speed_m_per_s", 0.0, inf)?,
             sensors: sensors as usize,
-            width: case.number("sensor_width_m")?,
-            span: [case.number("span_first")?, case.number("span_last")?],
-            t_frac: case.number("t_frac")?,
-            cutoff: case.number("filter_hz")?,
+            width: case.number_between("sensor_width_m", 0.0, inf)?,
+            span,
+            t_frac: case.number_between("t_frac", 0.0, 1.0)?,
+            cutoff: case.number_between("filter_hz", 0.0, inf)?,
         })
     }
 }
