@@ -158,6 +158,19 @@ fn study(deg: f64, n_half: f64, method: SensorMethod, divergence_correction: boo
         })
         .collect();
     let cf = 1000.0 * SPEED.powi(3) * sim.force;
+    // `CONV_DUMP=<file>`: the run's time, section force and sensor records as CSV (diagnosis).
+    if let Ok(path) = std::env::var("CONV_DUMP") {
+        let mut txt = String::new();
+        for k in 0..h.t.len() {
+            txt += &format!("{},{}", h.t[k], h.fz[k]);
+            for c in &h.sensors {
+                txt += &format!(",{}", c[k]);
+            }
+            txt += "\n";
+        }
+        std::fs::write(path, txt).unwrap();
+        println!("dp {dp} t_end {t_end} speed {SPEED} cf {cf} c0 {}", setup.c0);
+    }
     let ratio: Vec<f64> = h.t.iter().zip(&h.fz).map(|(t, f)| f / (cf * t)).collect();
     // `CONV_FORCE_TRACE=1`: F / F_similarity over tenths of the run (window means).
     if std::env::var("CONV_FORCE_TRACE").is_ok_and(|v| v == "1") {
