@@ -122,16 +122,23 @@ fn yettou_velocity() -> Vec<[f64; 2]> {
 /// later excess stays, the pattern of the closest 2D momentum model in
 /// [`yettou2006_criterion_against_2d_momentum_models`]. With the default echo-free tank (1.8 m deep instead
 /// of the experiment's 1.1 m, whose echo returns after about 18 ms) the histories are identical up to
-/// 16 ms and within 0.09 m/s after, so the excess at 17-18 ms is not the tank's acoustic echo. Asserted: within 0.45 m/s up to 25 ms, and SPH at or below the
-/// measurement + 0.1 m/s.
+/// 16 ms and within 0.09 m/s after, so the excess at 17-18 ms is not the tank's acoustic echo.
+///
+/// The figures above are with the full pair force on the body. With the wall-normal part (the default
+/// since 2026-11-27, [`slamtool::sph::body_force`]: the friction along the wall that the Riemann
+/// dissipation makes no longer acts on the body) the body decelerates less: the largest difference at 40
+/// particles is 0.32 m/s (-0.32 m/s at 6.8 ms, against -0.39 m/s), and from 15 ms on the SPH is above the
+/// measurement by up to 0.17 m/s (at 18.4 ms; the 80-particle run with the full pair force had +0.24 m/s
+/// there). Asserted: within 0.35 m/s up to 25 ms, and SPH at or below the measurement + 0.2 m/s.
 #[test]
 fn yettou2006_free_drop_velocity() {
     let worst = yettou_drop(None, true);
-    assert!(worst < 0.45, "largest velocity difference {worst} m/s");
+    assert!(worst < 0.35, "largest velocity difference {worst} m/s");
 }
 
 /// [`yettou2006_free_drop_velocity`] at 80 particles over the half-beam: largest difference 0.25 m/s
-/// measured (the SPH is then above the measurement from 15 ms on, by up to 0.25 m/s at 18 ms).
+/// measured with the full pair force (the SPH is then above the measurement from 15 ms on, by up to
+/// 0.25 m/s at 18 ms; not re-measured with the wall-normal force).
 #[test]
 #[ignore = "80 particles over the half-beam, about 20 s"]
 fn yettou2006_free_drop_velocity_fine() {
@@ -140,7 +147,7 @@ fn yettou2006_free_drop_velocity_fine() {
 }
 
 /// Run the Yettou case (at `n_half` particles over the half-beam if given) and return the largest
-/// |SPH - measured| velocity up to 25 ms; with `slower`, also assert SPH <= measured + 0.1 m/s.
+/// |SPH - measured| velocity up to 25 ms; with `slower`, also assert SPH <= measured + 0.2 m/s.
 fn yettou_drop(n_half: Option<f64>, slower: bool) -> f64 {
     let mut setup = sph::case::from_file(std::path::Path::new(concat!(
         env!("CARGO_MANIFEST_DIR"),
@@ -164,7 +171,7 @@ fn yettou_drop(n_half: Option<f64>, slower: bool) -> f64 {
         worst = worst.max((v - row[1]).abs());
         if slower {
             assert!(
-                v <= row[1] + 0.1,
+                v <= row[1] + 0.2,
                 "t {} ms: SPH {v} vs measured {}",
                 row[0],
                 row[1]

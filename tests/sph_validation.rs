@@ -138,8 +138,8 @@ fn hydrostatic_fine() {
 
 /// The same short wedge run on a 1-thread and a 2-thread rayon pool gives bit-identical histories and
 /// particle states, with the default numerics, with the alternatives (particle shifting, delta-SPH,
-/// contour-integrated force) and with the Riemann scheme, shifting and the corrected divergence in the
-/// refined tank.
+/// contour-integrated force) and with the Riemann scheme, shifting, the corrected divergence and the
+/// full pair force in the refined tank.
 #[test]
 fn identical_on_one_and_two_threads() {
     for variant in 0..3 {
@@ -169,10 +169,10 @@ fn identical_on_one_and_two_threads_with(variant: u8) {
                     shifting: Some(variant > 0),
                     riemann: Some(!alt),
                     divergence_correction: Some(variant == 2),
-                    force: Some(if alt {
-                        ForceMethod::Contour
-                    } else {
-                        ForceMethod::PairForces
+                    force: Some(match variant {
+                        0 => ForceMethod::NormalPairForces,
+                        1 => ForceMethod::Contour,
+                        _ => ForceMethod::PairForces,
                     }),
                     sensor_method: Some(if alt {
                         SensorMethod::ForcePanel

@@ -169,7 +169,10 @@ fn study(deg: f64, n_half: f64, method: SensorMethod, divergence_correction: boo
             txt += "\n";
         }
         std::fs::write(path, txt).unwrap();
-        println!("dp {dp} t_end {t_end} speed {SPEED} cf {cf} c0 {}", setup.c0);
+        println!(
+            "dp {dp} t_end {t_end} speed {SPEED} cf {cf} c0 {}",
+            setup.c0
+        );
     }
     let ratio: Vec<f64> = h.t.iter().zip(&h.fz).map(|(t, f)| f / (cf * t)).collect();
     // `CONV_FORCE_TRACE=1`: F / F_similarity over tenths of the run (window means).

@@ -1,7 +1,6 @@
-//! Section force as the sum of the pair forces between the fluid and the body dummies (the reaction of
-//! the pressure terms of the momentum equation, so the force on the body is exactly the momentum the fluid
-//! receives from it; e.g. Bouscasse et al. 2013, Comput. Fluids 80, eq. 14, for the same idea with
-//! ghost particles).
+//! Section force from the pair forces between the fluid and the body dummies (the reaction of the
+//! pressure terms of the momentum equation; e.g. Bouscasse et al. 2013, Comput. Fluids 80, eq. 14, for
+//! the same idea with ghost particles).
 //!
 //! The momentum equation gives fluid particle i the force m_i a_i = -sum_j P_ij V_i V_j grad_i W_ij from
 //! the dummies j of the body, with P_ij = p_i + p_j (or 2 P* of [`crate::sph::riemann`]). The force on the
@@ -9,13 +8,32 @@
 //!
 //! F = sum_{i fluid} sum_{j body} P_ij V_i V_j grad_i W_ij = sum_i sum_j P_ij V_i F_ij V_j r_ij.
 //!
+//! **The wall-normal part (the default section force).** Water without viscosity loads a body by its
+//! pressure, normal to the wall: F = -integral of p n ds. The pair forces also carry a force along the
+//! wall, made by the Riemann dissipation: against a body dummy it mirrors the fluid velocity along e_ij,
+//! so a particle sliding along the wall at speed U_t is damped by the dummies ahead of it, a friction of
+//! order rho U_t^2 that does not vanish as the spacing is refined (measured on constant-speed wedges at
+//! 40 and 80 particles per half-beam, `docs/numerics/wedge-convergence.md` item 9: its vertical part is
+//! 3 % of the similarity force at 20 deg, 6-7 % at 30 deg and 12-16 % at 45 deg, at both spacings). The
+//! default section force therefore keeps of each pair force only its component along the outward normal
+//! n of the contour at the foot of the fluid particle (mirrored for a dummy across the centreline):
+//!
+//! F_n = sum_i sum_j (P_ij V_i F_ij V_j r_ij . n) n,
+//!
+//! which is also what the force-panel sensors read ([`crate::sph::sensors`]), so the sensor pressures
+//! integrated around the contour give the section force. The full pair force ([`ForceMethod::PairForces`]:
+//! exactly the momentum the fluid receives from the body) stays available.
+//!
 //! With a symmetry plane the sums run over the starboard fluid and all body dummies (real and mirror
 //! images); the port fluid gives the same vertical force, so the vertical force is doubled and the
 //! horizontal one is zero. Sums run over the chunks of the neighbour lists in their fixed order, so the
 //! result does not depend on the number of threads.
+//!
+//! [`ForceMethod::PairForces`]: crate::sph::case::ForceMethod::PairForces
 
 use rayon::prelude::*;
 
+use crate::sph::body::{Section, nearest_on_polyline};
 use crate::sph::neighbour_lists::{LIST_CHUNK, ListsAt, NeighbourLists};
 use crate::sph::particles::{Kind, Particles};
 use crate::sph::riemann;
@@ -29,11 +47,47 @@ pub struct ForceScratch {
     out: Vec<[f64; 2]>,
 }
 
+/// The outward unit normals (from the body into the water) of the segments of the starboard half
+/// contour, body frame (keel at the origin), for the wall-normal section force.
+#[derive(Debug, Clone, Default)]
+pub struct WallNormals {
+    half: Vec<[f64; 2]>,
+    normals: Vec<[f64; 2]>,
+}
+
+impl WallNormals {
+    pub fn new(section: &Section) -> Self {
+        let half = section.half_points().to_vec();
+        // The starboard half runs from the keel outwards and up with the water on its right, so the
+        // outward normal of a segment with unit tangent (t_y, t_z) is (t_z, -t_y).
+        let normals = half
+            .windows(2)
+            .map(|w| {
+                let (ty, tz) = (w[1][0] - w[0][0], w[1][1] - w[0][1]);
+                let l = ty.hypot(tz).max(f64::MIN_POSITIVE);
+                [tz / l, -ty / l]
+            })
+            .collect();
+        WallNormals { half, normals }
+    }
+
+    /// Outward normal of the contour at the foot of the body-frame point (y, z): on the starboard half
+    /// for y >= 0, on its mirror image (n_y reversed) for y < 0.
+    pub fn at(&self, y: f64, z: f64) -> Option<[f64; 2]> {
+        let (k, _, _) = nearest_on_polyline(&self.half, y.abs(), z)?;
+        let [ny, nz] = self.normals[k];
+        Some(if y < 0.0 { [-ny, nz] } else { [ny, nz] })
+    }
+}
+
 /// Force (y, z) on the body (N/m) from the neighbour lists of the last momentum pass (which must belong
 /// to the current positions and storage order). `riemann` and `c0` select the pressure term as in the
 /// momentum pass. `z_range` bounds the heights of the fluid particles that can touch a body dummy (the
 /// body's height range widened by the dummy layers and the kernel support): the particles are sorted by
 /// grid row, so a chunk whose first and last particles lie both below or both above it is skipped.
+/// With `normal_part` (the contour normals and the keel height), only the wall-normal part of each pair
+/// force counts (see the module doc).
+#[allow(clippy::too_many_arguments)]
 pub fn interaction_force(
     lists: &NeighbourLists,
     pt: &Particles,
@@ -41,6 +95,7 @@ pub fn interaction_force(
     c0: f64,
     mirror: bool,
     z_range: [f64; 2],
+    normal_part: Option<(&WallNormals, f64)>,
     scratch: &mut ForceScratch,
 ) -> [f64; 2] {
     let at = lists.at(pt);
@@ -63,7 +118,9 @@ pub fn interaction_force(
                 if pt.kind[i] != Kind::Fluid {
                     continue;
                 }
-                if let Some([py, pz]) = body_pair_force(&at, c, k, i, pt, riemann, c0) {
+                // The wall normal at the particle's foot (body frame: keel at `z_keel`).
+                let n = normal_part.and_then(|(w, z_keel)| w.at(pt.y[i], pt.z[i] - z_keel));
+                if let Some([py, pz]) = body_pair_force(&at, c, k, i, pt, riemann, c0, n) {
                     fy += py;
                     fz += pz;
                 }
@@ -116,7 +173,7 @@ pub fn panel_forces<'a>(
                 if pt.kind[i] != Kind::Fluid || pt.y[i] < 0.0 {
                     continue;
                 }
-                let Some([fy, fz]) = body_pair_force(&at, c, k, i, pt, riemann, c0) else {
+                let Some([fy, fz]) = body_pair_force(&at, c, k, i, pt, riemann, c0, None) else {
                     continue;
                 };
                 let s = set.arc_of(pt.y[i], pt.z[i] - z_keel);
@@ -137,7 +194,10 @@ pub fn panel_forces<'a>(
 }
 
 /// The force of fluid particle i (entry k of its list chunk) on all the body dummies it neighbours (real
-/// and mirror images), sum_j P_ij V_i F_ij V_j r_ij; `None` when it touches no body dummy.
+/// and mirror images), sum_j P_ij V_i F_ij V_j r_ij; `None` when it touches no body dummy. With the wall
+/// normal `normal` at the particle's foot, only each pair force's component along it (along its mirror
+/// image for a dummy on the other side of the centreline).
+#[allow(clippy::too_many_arguments)]
 fn body_pair_force(
     at: &ListsAt,
     c: usize,
@@ -146,6 +206,7 @@ fn body_pair_force(
     pt: &Particles,
     riemann: bool,
     c0: f64,
+    normal: Option<[f64; 2]>,
 ) -> Option<[f64; 2]> {
     let (yi, zi, vyi, vzi) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i]);
     let (p_i, rho_i, vol_i) = (pt.p[i], pt.rho[i], pt.vol[i]);
@@ -165,8 +226,20 @@ fn body_pair_force(
             p_i + pt.p[j]
         };
         let w = psum * vol_i * e.f * pt.vol[j];
-        fy += w * dy;
-        fz += w * dz;
+        match normal {
+            Some([ny, nz]) => {
+                // The dummy's side of the centreline (a mirror image lies on the other side).
+                let yj = if e.mirrored { -pt.y[j] } else { pt.y[j] };
+                let ny = if yj * yi < 0.0 { -ny } else { ny };
+                let fn_ = w * (dy * ny + dz * nz);
+                fy += fn_ * ny;
+                fz += fn_ * nz;
+            }
+            None => {
+                fy += w * dy;
+                fz += w * dz;
+            }
+        }
     }
     touches.then_some([fy, fz])
 }

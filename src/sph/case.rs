@@ -22,7 +22,8 @@
 //! of [`crate::sph::riemann`]; false: delta-SPH with artificial viscosity), `shifting` (default false:
 //! particle shifting of [`crate::sph::shifting`]), `divergence_correction` (default false: the
 //! kernel-gradient-corrected velocity divergence of [`crate::sph::kernel_correction`]), `force`
-//! (`"pair_forces"`, the default, or `"contour"`), and `c0_m_s`, `h_over_dp`, `eos`, `delta`, `alpha`, `cfl`, `mirror`. The defaults are the combination
+//! (`"normal_pair_forces"`, the default: the wall-normal part of the fluid-body pair forces;
+//! `"pair_forces"`: all of them, the force along the wall included; or `"contour"`), and `c0_m_s`, `h_over_dp`, `eos`, `delta`, `alpha`, `cfl`, `mirror`. The defaults are the combination
 //! that measured best against the Zhao et al. (1996) 2D solution, the Wagner and similarity peak pressures
 //! and the drop tests (see `tests/sph_validation.rs`).
 
@@ -81,9 +82,14 @@ impl MotionSpec {
 pub enum ForceMethod {
     /// Wall pressure (Adami et al. 2012 extrapolation) integrated around the contour.
     Contour,
-    /// Sum of the fluid-body pair forces of the momentum equation ([`crate::sph::body_force`]).
-    #[default]
+    /// Sum of the fluid-body pair forces of the momentum equation ([`crate::sph::body_force`]), with the
+    /// force along the wall that the Riemann dissipation makes (exactly the momentum the fluid receives).
     PairForces,
+    /// The wall-normal part of the fluid-body pair forces, each fluid particle's along the contour
+    /// normal at its foot: the pressure load, which the force-panel sensors integrate to
+    /// ([`crate::sph::body_force`]).
+    #[default]
+    NormalPairForces,
 }
 
 /// How a sensor's pressure is obtained.

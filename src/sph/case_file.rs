@@ -411,12 +411,14 @@ mod tests {
                     [motion]\nkind = \"constant\"\nspeed_m_s = 2.0\n";
         let s = parse(base).unwrap();
         assert!(s.riemann == DEFAULT_RIEMANN && s.shifting == DEFAULT_SHIFTING);
-        assert_eq!(s.force, ForceMethod::PairForces);
+        assert_eq!(s.force, ForceMethod::NormalPairForces);
         let s = parse(&format!(
             "{base}[numerics]\nriemann = false\nshifting = true\nforce = \"contour\"\n"
         ))
         .unwrap();
         assert!(!s.riemann && s.shifting && s.force == ForceMethod::Contour);
+        let s = parse(&format!("{base}[numerics]\nforce = \"pair_forces\"\n")).unwrap();
+        assert_eq!(s.force, ForceMethod::PairForces);
         let e = parse(&format!("{base}[numerics]\nforce = \"pressure\"\n")).unwrap_err();
         assert!(e.to_string().starts_with("case.toml:7:9:"), "{e}");
         assert_eq!(s.sensor_method, SensorMethod::Interpolated);

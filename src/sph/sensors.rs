@@ -10,7 +10,9 @@
 //!   ([`crate::sph::body_force::panel_forces`]) on the body dummies near the span [s - w/2, s + w/2], each
 //!   weighted by the fraction of the contour it stands for (dp about its nearest contour point) that lies
 //!   on the span, and n the outward normal of the contour at s: the force a transducer measures on its
-//!   face, consistent with the pair-force section force (the panels tiling the contour add up to it).
+//!   face, consistent with the default (wall-normal) pair-force section force: the panels tiling the
+//!   contour add up to it, up to the particles at a corner, where the section force takes each pair
+//!   along the normal of its own side.
 
 use serde::{Deserialize, Serialize};
 

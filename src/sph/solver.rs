@@ -16,7 +16,8 @@
 //! The above is the `riemann = false` scheme. By default (`riemann = true`) the pressure sum p_i + p_j
 //! becomes 2 P* and the delta-SPH term the Riemann density dissipation of [`crate::sph::riemann`], without
 //! artificial viscosity. Optional particle shifting after each drift: [`crate::sph::shifting`]. Section
-//! force: the fluid-body pair forces ([`crate::sph::body_force`], default) or the contour integral of the
+//! force: the wall-normal part of the fluid-body pair forces ([`crate::sph::body_force`], default), all of
+//! the pair forces, or the contour integral of the
 //! extrapolated wall pressure; the contour pressure always uses the extrapolated pressure, the sensors
 //! either that (default) or the pair forces on their panel ([`crate::sph::sensors`]).
 //!
@@ -90,6 +91,8 @@ pub struct Simulation {
     sensors: SensorSet,
     /// Partial sums of the body forces (reused every step).
     force_scratch: body_force::ForceScratch,
+    /// Contour normals for the wall-normal section force.
+    wall_normals: body_force::WallNormals,
     shifting: Shifting,
     /// The absorbing layer along the tank walls and bottom.
     damping: DampingZone,
@@ -189,6 +192,9 @@ impl Simulation {
         let history = History::new(&sensors, setup.expected_steps());
         let n = contour.len();
         let closed_contour = section.as_ref().map_or(Vec::new(), |s| s.closed_contour());
+        let wall_normals = section
+            .as_ref()
+            .map_or_else(Default::default, body_force::WallNormals::new);
         let mut sim = Self {
             dummy_vol: dp * dp,
             kernel,
@@ -204,6 +210,7 @@ impl Simulation {
             closed_contour,
             sensors,
             force_scratch: body_force::ForceScratch::default(),
+            wall_normals,
             shifting: Shifting::default(),
             damping: DampingZone::new(tank.half_width, tank.depth, setup.damping_zone, setup.c0),
             body,
@@ -340,7 +347,10 @@ impl Simulation {
             fz *= 2.0;
             fy = 0.0;
         }
-        if self.setup.force == ForceMethod::PairForces {
+        if matches!(
+            self.setup.force,
+            ForceMethod::PairForces | ForceMethod::NormalPairForces
+        ) {
             let s = &self.setup;
             // Heights a fluid neighbour of a body dummy can have: the section, its dummy layers (one
             // kernel support thick) and one kernel support, plus one grid row (h), the spread of the
@@ -355,6 +365,7 @@ impl Simulation {
                 s.c0,
                 s.mirror,
                 z_range,
+                (s.force == ForceMethod::NormalPairForces).then_some((&self.wall_normals, zk)),
                 &mut self.force_scratch,
             );
         }

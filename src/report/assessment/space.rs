@@ -443,6 +443,10 @@ fn numerics_text(st: &serde_json::Value) -> String {
         Some("pair_forces") => {
             parts.push("section force as the sum of the fluid-body pair forces".into())
         }
+        Some("normal_pair_forces") => parts.push(
+            "section force as the wall-normal part of the fluid-body pair forces (the pressure load)"
+                .into(),
+        ),
         Some("contour") => parts.push("section force from the contour pressure".into()),
         _ => {}
     }
