@@ -663,21 +663,31 @@ fn control_characters_never_reach_the_terminal() {
     assert!(!e.contains('\u{1b}'), "{e}");
 }
 
+/// A bundled validation case file, its reference paths made absolute so that it runs from `cases/`.
+fn bundled_validation_case(file: &str) -> String {
+    std::fs::read_to_string(Path::new(ROOT).join("validation").join(file))
+        .unwrap()
+        .replace("\"../data/reference/", &format!("\"{ROOT}/data/reference/"))
+}
+
+/// `slamtool validate` on the single case `text` written to `cases/NAME.toml` under `d`, which must
+/// exit with status 6 (a case in error).
+fn validate_fails_on(d: &Path, name: &str, text: &str) -> std::process::Output {
+    std::fs::create_dir_all(d.join("cases")).unwrap();
+    std::fs::write(d.join(format!("cases/{name}.toml")), text).unwrap();
+    let o = slamtool(&["validate", "--cases-dir", "cases", "-o", "v"], d);
+    assert_eq!(o.status.code(), Some(6), "{}", stderr(&o));
+    o
+}
+
 #[test]
 fn validate_says_why_a_case_could_not_be_computed() {
     let (_t, d) = setup();
-    std::fs::create_dir_all(d.join("cases")).unwrap();
-    let case =
-        std::fs::read_to_string(Path::new(ROOT).join("validation/ochi1958-particulars.toml"))
-            .unwrap()
-            .replace("\"../data/reference/", &format!("\"{ROOT}/data/reference/"))
-            .replace(
-                "hull = \"../hulls/ochi-vform.toml\"",
-                "hull = \"missing.toml\"",
-            );
-    std::fs::write(d.join("cases/broken.toml"), case).unwrap();
-    let o = slamtool(&["validate", "--cases-dir", "cases", "-o", "v"], &d);
-    assert_eq!(o.status.code(), Some(6), "{}", stderr(&o));
+    let case = bundled_validation_case("ochi1958-particulars.toml").replace(
+        "hull = \"../hulls/ochi-vform.toml\"",
+        "hull = \"missing.toml\"",
+    );
+    let o = validate_fails_on(&d, "broken", &case);
     let text = String::from_utf8_lossy(&o.stdout);
     assert!(
         text.contains("ERROR broken: the computation failed:")
@@ -691,11 +701,7 @@ fn validate_says_why_a_case_could_not_be_computed() {
 #[test]
 fn validate_refuses_a_wedge_table_with_parameters_out_of_range() {
     let (_t, d) = setup();
-    std::fs::create_dir_all(d.join("cases")).unwrap();
-    let case =
-        std::fs::read_to_string(Path::new(ROOT).join("validation/wedge-convergence-table.toml"))
-            .unwrap()
-            .replace("\"../data/reference/", &format!("\"{ROOT}/data/reference/"));
+    let case = bundled_validation_case("wedge-convergence-table.toml");
     for (from, to, says) in [
         (
             "t_frac = 0.92",
@@ -714,9 +720,7 @@ fn validate_refuses_a_wedge_table_with_parameters_out_of_range() {
         ),
     ] {
         assert!(case.contains(from), "{from}");
-        std::fs::write(d.join("cases/bad.toml"), case.replace(from, to)).unwrap();
-        let o = slamtool(&["validate", "--cases-dir", "cases", "-o", "v"], &d);
-        assert_eq!(o.status.code(), Some(6), "{}", stderr(&o));
+        let o = validate_fails_on(&d, "bad", &case.replace(from, to));
         let text = format!("{}{}", String::from_utf8_lossy(&o.stdout), stderr(&o));
         assert!(text.contains(says) && !text.contains("panicked"), "{text}");
     }

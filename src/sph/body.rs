@@ -255,21 +255,27 @@ pub struct ContourPoint {
     pub s: f64,
 }
 
+/// Outward unit normal (from the body into the water) of the starboard-half segment from `a` to `b`, and
+/// the segment's length: the starboard half runs keel -> deck with the water on its right, so the normal
+/// of the unit tangent (t_y, t_z) is (t_z, -t_y). `None` for a segment of zero length.
+pub fn outward_normal(a: [f64; 2], b: [f64; 2]) -> Option<([f64; 2], f64)> {
+    let (ty, tz) = (b[0] - a[0], b[1] - a[1]);
+    let l = ty.hypot(tz);
+    (l > 0.0).then(|| ([tz / l, -ty / l], l))
+}
+
 /// Contour samples at spacing at most `spacing`, starboard half (and the port half when `both_sides`).
 pub fn contour_points(section: &Section, spacing: f64, both_sides: bool) -> Vec<ContourPoint> {
     let half = section.half_points();
     let mut out = Vec::new();
     let mut s0 = 0.0;
     for w in half.windows(2) {
-        let (ty, tz) = (w[1][0] - w[0][0], w[1][1] - w[0][1]);
-        let l = ty.hypot(tz);
-        if l == 0.0 {
+        let Some(([ny, nz], l)) = outward_normal(w[0], w[1]) else {
             continue;
-        }
+        };
+        let (ty, tz) = (w[1][0] - w[0][0], w[1][1] - w[0][1]);
         let m = ((l / spacing).ceil() as usize).max(1);
         let ds = l / m as f64;
-        // Starboard half runs keel -> deck; the water is to the right of that direction.
-        let (ny, nz) = (tz / l, -ty / l);
         for i in 0..m {
             let f = (i as f64 + 0.5) / m as f64;
             let p = ContourPoint {

@@ -33,7 +33,7 @@
 
 use rayon::prelude::*;
 
-use crate::sph::body::{Section, nearest_on_polyline};
+use crate::sph::body::{Section, nearest_on_polyline, outward_normal};
 use crate::sph::neighbour_lists::{LIST_CHUNK, ListsAt, NeighbourLists};
 use crate::sph::particles::{Kind, Particles};
 use crate::sph::riemann;
@@ -58,15 +58,10 @@ pub struct WallNormals {
 impl WallNormals {
     pub fn new(section: &Section) -> Self {
         let half = section.half_points().to_vec();
-        // The starboard half runs from the keel outwards and up with the water on its right, so the
-        // outward normal of a segment with unit tangent (t_y, t_z) is (t_z, -t_y).
+        // (A section's points are distinct, so no segment has zero length; one would get no normal.)
         let normals = half
             .windows(2)
-            .map(|w| {
-                let (ty, tz) = (w[1][0] - w[0][0], w[1][1] - w[0][1]);
-                let l = ty.hypot(tz).max(f64::MIN_POSITIVE);
-                [tz / l, -ty / l]
-            })
+            .map(|w| outward_normal(w[0], w[1]).map_or([0.0, 0.0], |(n, _)| n))
             .collect();
         WallNormals { half, normals }
     }
@@ -118,9 +113,8 @@ pub fn interaction_force(
                 if pt.kind[i] != Kind::Fluid {
                     continue;
                 }
-                // The wall normal at the particle's foot (body frame: keel at `z_keel`).
-                let n = normal_part.and_then(|(w, z_keel)| w.at(pt.y[i], pt.z[i] - z_keel));
-                if let Some([py, pz]) = body_pair_force(&at, c, k, i, pt, riemann, c0, n) {
+                if let Some([py, pz]) = body_pair_force(&at, c, k, i, pt, riemann, c0, normal_part)
+                {
                     fy += py;
                     fz += pz;
                 }
@@ -194,9 +188,11 @@ pub fn panel_forces<'a>(
 }
 
 /// The force of fluid particle i (entry k of its list chunk) on all the body dummies it neighbours (real
-/// and mirror images), sum_j P_ij V_i F_ij V_j r_ij; `None` when it touches no body dummy. With the wall
-/// normal `normal` at the particle's foot, only each pair force's component along it (along its mirror
-/// image for a dummy on the other side of the centreline).
+/// and mirror images), sum_j P_ij V_i F_ij V_j r_ij; `None` when it touches no body dummy. With
+/// `normal_part` (the contour normals and the keel height), only each pair force's component along the
+/// wall normal at the particle's foot (along its mirror image for a dummy on the other side of the
+/// centreline); the foot is looked up once, at the first body dummy, so particles that touch none cost
+/// no search.
 #[allow(clippy::too_many_arguments)]
 fn body_pair_force(
     at: &ListsAt,
@@ -206,11 +202,13 @@ fn body_pair_force(
     pt: &Particles,
     riemann: bool,
     c0: f64,
-    normal: Option<[f64; 2]>,
+    normal_part: Option<(&WallNormals, f64)>,
 ) -> Option<[f64; 2]> {
     let (yi, zi, vyi, vzi) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i]);
     let (p_i, rho_i, vol_i) = (pt.p[i], pt.rho[i], pt.vol[i]);
     let (mut fy, mut fz, mut touches) = (0.0, 0.0, false);
+    // The wall normal at i's foot (body frame: keel at z_keel), once i is found to touch the body.
+    let mut normal: Option<Option<[f64; 2]>> = None;
     for e in at.of(c, k, i) {
         let j = e.j;
         if e.fluid || pt.kind[j] != Kind::Body {
@@ -226,7 +224,10 @@ fn body_pair_force(
             p_i + pt.p[j]
         };
         let w = psum * vol_i * e.f * pt.vol[j];
-        match normal {
+        let n = *normal.get_or_insert_with(|| {
+            normal_part.and_then(|(walls, z_keel)| walls.at(yi, zi - z_keel))
+        });
+        match n {
             Some([ny, nz]) => {
                 // The dummy's side of the centreline (a mirror image lies on the other side).
                 let yj = if e.mirrored { -pt.y[j] } else { pt.y[j] };

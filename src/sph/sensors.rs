@@ -193,16 +193,13 @@ pub fn integration_span(s: &SensorSpec, dp: f64, len: f64) -> [f64; 2] {
 fn panel(sec: &Section, s: f64, span: [f64; 2]) -> Panel {
     let (mut acc, mut n) = (0.0, [0.0, -1.0]);
     for seg in sec.half_points().windows(2) {
-        let (ty, tz) = (seg[1][0] - seg[0][0], seg[1][1] - seg[0][1]);
-        let l = ty.hypot(tz);
-        if l > 0.0 {
-            // Starboard half runs keel -> deck; the water is to the right of that direction.
-            n = [tz / l, -ty / l];
+        if let Some((normal, l)) = body::outward_normal(seg[0], seg[1]) {
+            n = normal;
             if s <= acc + l {
                 break;
             }
+            acc += l;
         }
-        acc += l;
     }
     Panel {
         s0: span[0],
