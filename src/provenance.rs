@@ -66,7 +66,7 @@ impl Provenance {
         for p in inputs {
             let bytes = std::fs::read(p).map_err(|e| Error::io(p, e))?;
             files.push(InputFile {
-                path: p.display().to_string(),
+                path: lexically_normal(p).display().to_string(),
                 sha256: sha256_hex(&bytes),
             });
         }
@@ -87,6 +87,31 @@ impl Provenance {
         s += &format!("# settings {}\n", self.settings);
         s
     }
+}
+
+/// A path with its `.` components dropped and each `name/..` pair removed, without touching the file
+/// system (so `validation/../data/x.toml` is named `data/x.toml`; a leading `..` stays). Provenance names
+/// a file the way a reader would look for it.
+pub fn lexically_normal(p: &Path) -> std::path::PathBuf {
+    use std::path::Component;
+    let mut out: Vec<Component> = Vec::new();
+    for c in p.components() {
+        match c {
+            Component::CurDir => {}
+            Component::ParentDir => match out.last() {
+                Some(Component::Normal(_)) => {
+                    out.pop();
+                }
+                Some(Component::RootDir | Component::Prefix(_)) => {}
+                _ => out.push(c),
+            },
+            _ => out.push(c),
+        }
+    }
+    if out.is_empty() {
+        return std::path::PathBuf::from(".");
+    }
+    out.iter().collect()
 }
 
 /// Lower-case hex SHA-256 of some bytes.
@@ -115,5 +140,15 @@ mod tests {
             sha256_hex(b"abc"),
             "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad"
         );
+    }
+
+    #[test]
+    fn paths_are_named_without_dot_dot() {
+        let n = |s: &str| lexically_normal(Path::new(s)).display().to_string();
+        assert_eq!(n("validation/../data/x.toml"), "data/x.toml");
+        assert_eq!(n("./a/./b/../c"), "a/c");
+        assert_eq!(n("../shared/r.toml"), "../shared/r.toml");
+        assert_eq!(n("a/.."), ".");
+        assert_eq!(n("/x/../y"), "/y");
     }
 }

@@ -191,6 +191,61 @@ fn exit_status_follows_the_verdicts_and_the_summary_has_one_row_per_case() {
     assert!(stdout.contains("FAIL"), "{stdout}");
 }
 
+/// Each case's CSV files name that case's own inputs (its case file and what it reads), not every
+/// file of the suite, with lexically normal paths.
+#[test]
+fn a_case_csv_names_its_own_inputs() {
+    let r = root();
+    let particulars = std::fs::read_to_string(r.join("validation/ochi1958-particulars.toml"))
+        .unwrap()
+        .replace(
+            "\"../data/reference/ochi1958_vform.toml\"",
+            &format!(
+                "\"{}/../data/reference/ochi1958_vform.toml\"",
+                r.join("validation").display()
+            ),
+        )
+        .replace(
+            "\"../hulls/ochi-vform.toml\"",
+            &format!("\"{}\"", r.join("hulls/ochi-vform.toml").display()),
+        );
+    let dir = tempfile::tempdir().unwrap();
+    let (code, stdout, out) = run_cli(
+        &[
+            ("a-pass", wagner_case(0.05, None)),
+            ("c-particulars", particulars),
+        ],
+        dir.path(),
+    );
+    assert_eq!(code, 0, "{stdout}");
+    let csvs: Vec<PathBuf> = std::fs::read_dir(out.join("c-particulars"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "csv"))
+        .collect();
+    assert!(csvs.len() >= 2, "{csvs:?}");
+    for p in &csvs {
+        let text = std::fs::read_to_string(p).unwrap();
+        let inputs: Vec<&str> = text.lines().filter(|l| l.starts_with("# input ")).collect();
+        let shows = |name: &str| inputs.iter().any(|l| l.contains(name));
+        assert!(shows("c-particulars.toml"), "{}: {inputs:?}", p.display());
+        assert!(
+            shows("ochi-vform.toml") && shows("ochi1958_vform.toml"),
+            "{inputs:?}"
+        );
+        assert!(
+            !shows("a-pass.toml") && !shows("hermundstad2005_panel"),
+            "{inputs:?}"
+        );
+        assert!(!inputs.iter().any(|l| l.contains("/../")), "{inputs:?}");
+        assert!(
+            text.contains(r#""case":"c-particulars""#),
+            "{}",
+            p.display()
+        );
+    }
+}
+
 /// The document outline the PDF is built from: the front table has one row per case, and every case
 /// has its own section with its verdict.
 #[test]

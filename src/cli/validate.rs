@@ -93,15 +93,14 @@ pub fn run(a: ValidateArgs) -> Result<()> {
         k += 1;
         global::note(&format!("[{k}/{total}] {}", c.name));
     });
-    let prov_json = serde_json::to_value(&prov).unwrap_or_default();
-    let mut written = report::write(&suite, &a.out, &prov.csv_header(), &prov_json)?;
+    let mut written = report::write(&suite, &a.out, &prov)?;
     let pdf = a.out.join("validation.pdf");
     slamtool::files::write_atomic(&pdf, &validate::document::pdf(&suite, &prov.commit)?)?;
     written.push(pdf);
     if a.json.json {
         global::print_json(serde_json::json!({
             "tool": prov.tool,
-            "provenance": prov_json,
+            "provenance": &prov,
             "warnings": [],
             "outputs": {"folder": a.out, "files": written},
             "mode": mode,

@@ -151,8 +151,9 @@ pub fn run_case(case: &Case, mode: Mode, memo: &run::Memo) -> CaseResult {
     let wall_time_s = start.elapsed().as_secs_f64();
     let root = std::env::current_dir().unwrap_or_default();
     let shown = |p: &std::path::Path| {
+        let p = crate::provenance::lexically_normal(p);
         p.strip_prefix(&root)
-            .unwrap_or(p)
+            .unwrap_or(&p)
             .display()
             .to_string()
             .replace("\\", "/")
@@ -190,8 +191,11 @@ pub fn run_case(case: &Case, mode: Mode, memo: &run::Memo) -> CaseResult {
             (None, None, None, Verdict::Error, None, Vec::new())
         }
     };
+    // The case file first (unless the case was built from text in memory), then every file it reads:
+    // what a CSV of this case depends on.
     let mut inputs = Vec::new();
-    for p in case.input_files() {
+    let own = Some(case.path.clone()).filter(|p| p.is_file());
+    for p in own.into_iter().chain(case.input_files()) {
         match std::fs::read(&p) {
             Ok(bytes) => inputs.push(crate::provenance::InputFile {
                 path: shown(&p),

@@ -8,9 +8,10 @@ use std::path::{Path, PathBuf};
 use serde::Serialize;
 
 use super::compare::{self, Reference, trim};
-use super::{CaseResult, Suite, plot};
+use super::{CaseResult, Mode, Suite, plot};
 use crate::error::Result;
 use crate::files::write_text_atomic;
+use crate::provenance::Provenance;
 
 /// One row of the front-page table, as text.
 #[derive(Debug, Clone, Serialize)]
@@ -233,13 +234,28 @@ fn count(s: &Suite, v: &[super::Verdict]) -> usize {
     s.cases.iter().filter(|c| v.contains(&c.verdict)).count()
 }
 
-/// Write the report into `dir`; returns the files written. `header` is the provenance as `#` lines.
-pub fn write(
-    s: &Suite,
-    dir: &Path,
-    header: &str,
-    provenance: &serde_json::Value,
-) -> Result<Vec<PathBuf>> {
+/// The provenance of one case's CSV files as `#` lines: the suite's tool and commit, the case's own
+/// input files (its case file and what it reads, [`CaseResult::inputs`]) and settings naming the mode
+/// and the case, so that each file says what it depends on and not what the rest of the suite read.
+pub fn case_header(suite: &Provenance, mode: Mode, c: &CaseResult) -> String {
+    Provenance {
+        tool: suite.tool.clone(),
+        commit: suite.commit.clone(),
+        inputs: c.inputs.clone(),
+        settings: serde_json::json!({
+            "mode": mode,
+            "case": c.name,
+            "solver_sources_sha256": crate::provenance::SOLVER_SOURCES_SHA256,
+        }),
+    }
+    .csv_header()
+}
+
+/// Write the report into `dir`; returns the files written. `suite_provenance` heads the suite's files
+/// (summary.csv, summary.json); each case's CSV files carry [`case_header`].
+pub fn write(s: &Suite, dir: &Path, suite_provenance: &Provenance) -> Result<Vec<PathBuf>> {
+    let header = suite_provenance.csv_header();
+    let provenance = serde_json::to_value(suite_provenance).unwrap_or_default();
     std::fs::create_dir_all(dir).map_err(|e| crate::Error::io(dir, e))?;
     let mut files = Vec::new();
     let mut put = |p: PathBuf, text: &str| -> Result<()> {
@@ -247,7 +263,7 @@ pub fn write(
         files.push(p);
         Ok(())
     };
-    put(dir.join("summary.csv"), &summary_csv(s, header))?;
+    put(dir.join("summary.csv"), &summary_csv(s, &header))?;
     put(dir.join("summary.md"), &markdown(s))?;
     let json = serde_json::json!({
         "tool": format!("slamtool {}", env!("CARGO_PKG_VERSION")),
@@ -270,8 +286,9 @@ pub fn write(
             cd.join("case.json"),
             &(serde_json::to_string_pretty(c).unwrap_or_default() + "\n"),
         )?;
+        let header = case_header(suite_provenance, s.mode, c);
         if let Some(t) = &c.table {
-            let mut text = header.to_string();
+            let mut text = header.clone();
             text += &t.header.join(",");
             text.push('\n');
             for row in &t.rows {
