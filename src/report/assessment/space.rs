@@ -386,6 +386,15 @@ pub fn appendix(r: &mut Report, saved: &Saved) {
         schemes.sort();
         schemes.dedup();
         r.para(&format!("Numerics: {}.", schemes.join("; ")));
+        r.para(
+            "Sound speed: the automatic c0 keeps the density change to 1 % at Wagner's peak pressure, which \
+             puts Wagner's wetted contact at Mach 0.14, (pi/2) V cot(beta) / c0, wherever that bound sets c0 \
+             (each run's summary.json states its own Mach number). On constant-speed wedges of 20-45 deg at \
+             Mach 0.14 the SPH section force read 7-9 % below its value as c0 grows, a compressibility \
+             error of first order in 1/c0 (docs/numerics/wedge-convergence.md, item 10). The section forces \
+             of this report carry that bias; their convergence verdicts, made in the particle spacing at a \
+             fixed c0, do not measure it.",
+        );
         r.push(Block::Table {
             caption:
                 "SPH runs: particle spacing dp (mm), sound speed c0 (m/s), tank half-width x depth \
