@@ -154,13 +154,50 @@ pub fn temporary(out: &Path, key: &str) -> Result<PathBuf> {
 
 /// Complete an entry: write the record into the temporary folder, then rename it into place (replacing an
 /// earlier entry of the same key).
-pub fn commit(out: &Path, key: &str, tmp: &Path, record: &SphRecord) -> Result<()> {
+pub fn commit(out: &Path, key: &str, tmp: &Path, record: &impl Serialize) -> Result<()> {
     crate::files::write_text_atomic(&tmp.join(RECORD), &stored_text(record)?)?;
+    let _ = std::fs::remove_dir_all(failed_dir(out, key));
     let dest = entry(out, key);
     if dest.exists() {
         std::fs::remove_dir_all(&dest).map_err(|e| Error::io(&dest, e))?;
     }
     std::fs::rename(tmp, &dest).map_err(|e| Error::io(&dest, e))
+}
+
+/// The folder kept for the histories of the failed run of `key`: hidden (a dot name), so it is never
+/// read as a cache entry, reported as unused or pruned; replaced by the next failure of the same key and
+/// removed when the key's run succeeds.
+pub fn failed_dir(out: &Path, key: &str) -> PathBuf {
+    out.join("cache").join(format!(".failed-{key}"))
+}
+
+/// Keep what a failed run of `key` wrote in its temporary folder `tmp` (its histories up to the stop and
+/// its summary) under [`failed_dir`], and name that folder in the error instead of the temporary one, which
+/// the next assessment sweeps away. If the move fails, the temporary folder is removed and the error says
+/// that nothing was kept.
+pub fn keep_failed(out: &Path, key: &str, tmp: &Path, err: Error) -> Error {
+    let kept = failed_dir(out, key);
+    let _ = std::fs::remove_dir_all(&kept);
+    let moved = std::fs::rename(tmp, &kept).is_ok();
+    if !moved {
+        let _ = std::fs::remove_dir_all(tmp);
+    }
+    let (from, to) = (tmp.display().to_string(), kept.display().to_string());
+    let name = |m: String| {
+        if moved {
+            m.replace(&from, &to)
+        } else {
+            m.replace(
+                &format!("; histories so far written to {from}"),
+                "; its histories could not be kept",
+            )
+        }
+    };
+    match err {
+        Error::Numerical(m) => Error::Numerical(name(m)),
+        Error::Invalid(m) => Error::Invalid(name(m)),
+        other => other,
+    }
 }
 
 /// Remove the temporary folders that killed runs left behind.
@@ -339,6 +376,34 @@ mod tests {
         std::fs::create_dir_all(out.join("cache/ddd")).unwrap();
         assert_eq!(tidy(&out, &used, Unused::Ignore).unwrap(), None);
         assert!(out.join("cache/ddd").exists());
+        std::fs::remove_dir_all(&out).unwrap();
+    }
+
+    /// A failed run's histories stay under `.failed-<key>`, the error names that folder, the sweep of
+    /// temporary folders and the pruning of unused entries leave it, and the key's next successful run
+    /// removes it.
+    #[test]
+    fn a_failed_run_keeps_its_histories_where_the_error_says() {
+        let out =
+            std::env::temp_dir().join(format!("slamtool-cache-failed-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&out);
+        let tmp = temporary(&out, "kkk").unwrap();
+        std::fs::write(tmp.join("history.csv"), "t,p\n0,1\n").unwrap();
+        let err = Error::Numerical(format!(
+            "SPH run 'x' stopped at t = 0.1 s: diverged; histories so far written to {}",
+            tmp.display()
+        ));
+        let err = keep_failed(&out, "kkk", &tmp, err).to_string();
+        let kept = failed_dir(&out, "kkk");
+        assert!(err.contains(&kept.display().to_string()), "{err}");
+        assert!(kept.join("history.csv").is_file() && !tmp.exists());
+        sweep(&out);
+        let used: std::collections::BTreeSet<String> = std::collections::BTreeSet::new();
+        assert_eq!(tidy(&out, &used, Unused::Prune).unwrap(), None);
+        assert!(kept.join("history.csv").is_file());
+        let tmp = temporary(&out, "kkk").unwrap();
+        commit(&out, "kkk", &tmp, &serde_json::json!({"key": "kkk"})).unwrap();
+        assert!(!kept.exists() && entry(&out, "kkk").exists());
         std::fs::remove_dir_all(&out).unwrap();
     }
 }

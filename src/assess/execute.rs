@@ -186,10 +186,7 @@ fn sph_event(
     };
     let r = match sph::run_staged(setup, &opts, study) {
         Ok(r) => r,
-        Err(err) => {
-            let _ = std::fs::remove_dir_all(&tmp);
-            return Err(err);
-        }
+        Err(err) => return Err(cache::keep_failed(out, key, &tmp, err)),
     };
     let rec = record(key, &r.summary);
     cache::commit(out, key, &tmp, &rec)?;
