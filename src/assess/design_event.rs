@@ -82,6 +82,28 @@ pub fn definition(basis: Basis, n: f64, exposure_h: f64, peak_period_s: f64) -> 
     )
 }
 
+/// A warning when the regular wave at the spectral peak period that gives the design entry velocity
+/// (amplitude `zeta`) is larger than the most probable largest wave amplitude of the exposure,
+/// (Hs / 4) sqrt(2 ln N_w) with N_w = exposure / T_p waves (Rayleigh amplitudes of standard deviation
+/// Hs / 4; Longuet-Higgins 1952): the relative motion at T_p is then small for this hull and the slams
+/// come from other periods of the spectrum, so the profile shape (its deceleration after keel entry) is a
+/// stand-in, slower than the sea's slams. The entry velocity itself comes from the slam statistics and
+/// is not affected.
+pub fn amplitude_warning(zeta: f64, hs: f64, exposure_h: f64, tp: f64) -> Option<String> {
+    let waves = (exposure_h * 3600.0 / tp).max(1.0);
+    let largest = 0.25 * hs * (2.0 * waves.ln()).sqrt();
+    (zeta.is_finite() && largest > 0.0 && zeta > largest).then(|| {
+        format!(
+            "its profile's regular wave at the spectral peak period {tp:.2} s needs an amplitude of {zeta:.2} m \
+             to give the design entry velocity, {:.1} times the most probable largest wave amplitude of the \
+             exposure ({largest:.2} m: Hs {hs:.2} m, {waves:.0} waves of T_p): the relative motion at T_p is \
+             small for this hull, so the profile's deceleration after keel entry is a stand-in (slower than \
+             the sea's slams); the entry velocity comes from the slam statistics and is not affected",
+            zeta / largest
+        )
+    })
+}
+
 /// The keel-entry profile of the regular wave (relative motion `rm` per unit amplitude, encounter frequency
 /// `omega_e`) whose amplitude gives the entry velocity `v` at a station of draft `draft`; the amplitude
 /// and the profile (`n` samples, ending at `max_depth` at most). None when no amplitude up to 100 times
@@ -127,7 +149,9 @@ pub fn scaled_entry(
 }
 
 /// The design events of every irregular sea, speed and station of a plan (appended after the regular
-/// waves' events, in the order speed, sea, station), and one line per station without one (why).
+/// waves' events, in the order speed, sea, station), and warning lines: one per station without a design
+/// event (why), and one per event whose profile wave is larger than the sea's largest
+/// ([`amplitude_warning`]).
 pub(crate) fn plan_events(
     p: &PlanInputs,
     basis: Basis,
@@ -167,6 +191,12 @@ pub(crate) fn plan_events(
                     ));
                     continue;
                 };
+                if let Some(w) = amplitude_warning(zeta, sea.spectrum.hs(), ir.duration_h, tp) {
+                    skipped.push(format!(
+                        "design event at station {} Lpp, {:.3} m/s, sea {}: {w}",
+                        st.aft_of_fp, sp.speed_m_s, ir.sea
+                    ));
+                }
                 let design = DesignEvent {
                     sea: ir.sea.clone(),
                     definition: definition(basis, n, ir.duration_h, tp),
@@ -271,5 +301,18 @@ mod tests {
         let (z, k) = scaled_entry(&rm, 1.0, 0.3, 10.0, 0.4, 11).unwrap();
         assert!((z - 0.5).abs() < 1e-9, "{z}");
         assert!((k.entry_velocity - 0.4).abs() < 1e-9);
+    }
+
+    /// A profile wave larger than the sea's most probable largest wave is flagged; one within it is not.
+    #[test]
+    fn a_profile_wave_larger_than_the_sea_is_flagged() {
+        // Hs 5.5 m, 3 h at Tp 11 s: 982 waves, largest amplitude 1.375 x sqrt(2 ln 982) = 5.10 m.
+        let w = amplitude_warning(52.0, 5.5, 3.0, 11.0).unwrap();
+        assert!(
+            w.contains("52.00 m") && w.contains("10.2 times") && w.contains("5.10 m"),
+            "{w}"
+        );
+        assert!(amplitude_warning(4.0, 5.5, 3.0, 11.0).is_none());
+        assert!(amplitude_warning(f64::NAN, 5.5, 3.0, 11.0).is_none());
     }
 }
