@@ -161,7 +161,7 @@ pub(crate) fn plan_events(
     use crate::seakeeping::relative_motion::at_station;
     use crate::seakeeping::strip_theory::{StripSettings, respond};
     let mut events = Vec::new();
-    let mut skipped = Vec::new();
+    let mut notes = Vec::new();
     for sp in &p.motions.speeds {
         for (ir, sea) in sp.irregular.iter().zip(&p.sea.irregular) {
             let omega_p = sea.spectrum.peak_frequency();
@@ -170,7 +170,7 @@ pub(crate) fn plan_events(
             for (st, stats) in p.stations.iter().zip(&ir.stations) {
                 let label = format!("{}/design", ir.sea);
                 let Some((v, n)) = design_velocity(stats, ir.duration_h, basis) else {
-                    skipped.push(format!(
+                    notes.push(format!(
                         "no design event at station {} Lpp, {:.3} m/s, sea {}: {:.2} slams expected in {} h \
                          (fewer than one)",
                         st.aft_of_fp,
@@ -184,7 +184,7 @@ pub(crate) fn plan_events(
                 let rm = at_station(&r, st.x, 1.0)?;
                 let Some((zeta, k)) = scaled_entry(&rm, r.omega_e, st.draft, st.height, v, 41)
                 else {
-                    skipped.push(format!(
+                    notes.push(format!(
                         "no design event at station {} Lpp, {:.3} m/s, sea {}: no regular wave at the spectral \
                          peak period gives the design entry velocity {v:.3} m/s",
                         st.aft_of_fp, sp.speed_m_s, ir.sea
@@ -192,7 +192,7 @@ pub(crate) fn plan_events(
                     continue;
                 };
                 if let Some(w) = amplitude_warning(zeta, sea.spectrum.hs(), ir.duration_h, tp) {
-                    skipped.push(format!(
+                    notes.push(format!(
                         "design event at station {} Lpp, {:.3} m/s, sea {}: {w}",
                         st.aft_of_fp, sp.speed_m_s, ir.sea
                     ));
@@ -236,7 +236,7 @@ pub(crate) fn plan_events(
             }
         }
     }
-    Ok((events, skipped))
+    Ok((events, notes))
 }
 
 /// What [`plan_events`] needs of a plan in the making.

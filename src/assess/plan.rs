@@ -335,7 +335,7 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
             }
         }
     }
-    let (design, skipped) = super::design_event::plan_events(
+    let (design, design_warnings) = super::design_event::plan_events(
         &super::design_event::PlanInputs {
             hull,
             sea,
@@ -349,7 +349,7 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
     events.extend(design);
     let mut warnings = s.warnings.clone();
     warnings.extend(motions.warnings.iter().cloned());
-    warnings.extend(skipped);
+    warnings.extend(design_warnings);
     for &f in &at {
         warnings.extend(impact::air_cushion_warning(
             f,

@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 use serde::Serialize;
 
 use super::compare::{self, Reference, trim};
-use super::{CaseResult, Mode, Suite, plot};
+use super::{CaseResult, Suite, plot};
 use crate::error::Result;
 use crate::files::write_text_atomic;
 use crate::provenance::Provenance;
@@ -234,19 +234,21 @@ fn count(s: &Suite, v: &[super::Verdict]) -> usize {
     s.cases.iter().filter(|c| v.contains(&c.verdict)).count()
 }
 
-/// The provenance of one case's CSV files as `#` lines: the suite's tool and commit, the case's own
-/// input files (its case file and what it reads, [`CaseResult::inputs`]) and settings naming the mode
-/// and the case, so that each file says what it depends on and not what the rest of the suite read.
-pub fn case_header(suite: &Provenance, mode: Mode, c: &CaseResult) -> String {
+/// The provenance of one case's CSV files as `#` lines: the suite's tool, commit and settings, with the
+/// suite's list of cases replaced by this case's name and its inputs by the case's own (its case file and
+/// what it reads, [`CaseResult::inputs`]), so that each file says what it depends on and not what the
+/// rest of the suite read.
+pub fn case_header(suite: &Provenance, c: &CaseResult) -> String {
+    let mut settings = suite.settings.clone();
+    if let Some(o) = settings.as_object_mut() {
+        o.remove("cases");
+        o.insert("case".into(), c.name.clone().into());
+    }
     Provenance {
         tool: suite.tool.clone(),
         commit: suite.commit.clone(),
         inputs: c.inputs.clone(),
-        settings: serde_json::json!({
-            "mode": mode,
-            "case": c.name,
-            "solver_sources_sha256": crate::provenance::SOLVER_SOURCES_SHA256,
-        }),
+        settings,
     }
     .csv_header()
 }
@@ -286,7 +288,7 @@ pub fn write(s: &Suite, dir: &Path, suite_provenance: &Provenance) -> Result<Vec
             cd.join("case.json"),
             &(serde_json::to_string_pretty(c).unwrap_or_default() + "\n"),
         )?;
-        let header = case_header(suite_provenance, s.mode, c);
+        let header = case_header(suite_provenance, c);
         if let Some(t) = &c.table {
             let mut text = header.clone();
             text += &t.header.join(",");
