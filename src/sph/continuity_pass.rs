@@ -1,6 +1,15 @@
 //! The continuity pass: the density rate of every fluid particle over the neighbour lists of the last
 //! momentum pass ([`crate::sph::rates`]; equations in [`crate::sph::solver`]). A gather over the
 //! neighbours of one particle in the fixed cell-sorted order, so bit-identical on any number of threads.
+//!
+//! With the Riemann scheme the density rate is rho_i (sum_j (u_i - u_j) . grad_i W_ij V_j + D_i), with
+//! D_i the dissipation sum of [`riemann::continuity_term`]. The continuity pass runs at the positions and
+//! densities of the last momentum pass (only the velocities have been kicked since,
+//! [`crate::sph::integrator`]), and D_i needs no velocities, so the momentum pass sums it (from the pair
+//! distances, kernel factors, pressures and densities it has at hand) and leaves it in the density
+//! rate's slot; this pass then reads only the neighbours' positions, velocities and volumes, in batches
+//! that the compiler vectorises ([`crate::sph::pair_batch`]). The terms and the order of the sums are
+//! those of one pair at a time, so the rates are bit-identical to a separate dissipation loop.
 
 use rayon::prelude::*;
 
@@ -9,10 +18,9 @@ use crate::sph::diffusion::antuono2010;
 use crate::sph::kernel::WendlandC2;
 use crate::sph::kernel_correction;
 use crate::sph::neighbour_lists::{ChunkLists, LIST_CHUNK, NeighbourLists, is_fluid, neighbour};
-use crate::sph::pair_batch::has_avx2;
+use crate::sph::pair_batch::{KINEMATIC_BATCH, KinematicTerms, Kinematics, has_avx2};
 use crate::sph::particles::{Kind, Particles, View};
 use crate::sph::refinement::PairKernels;
-use crate::sph::riemann;
 
 /// Density rate of every fluid particle (continuity with delta-SPH diffusion) into `rate[i][2]`, over the
 /// neighbour lists of the last momentum pass (which must have run at the current positions and storage
@@ -50,7 +58,6 @@ fn continuity_pass<const RIEMANN: bool, const CORRECTED: bool, const MULTI: bool
     s: &Setup,
 ) {
     let delta_term = s.delta * kernel.h() * s.c0;
-    let (c0, rho0_g) = (s.c0, s.rho0 * s.g);
     let kernel = *kernel;
     let pairs = PairKernels::new(kernel.h());
     let avx2 = has_avx2();
@@ -71,8 +78,6 @@ fn continuity_pass<const RIEMANN: bool, const CORRECTED: bool, const MULTI: bool
                     kernel,
                     pairs,
                     delta_term,
-                    c0,
-                    rho0_g,
                 };
                 #[cfg(target_arch = "x86_64")]
                 if avx2 {
@@ -80,7 +85,11 @@ fn continuity_pass<const RIEMANN: bool, const CORRECTED: bool, const MULTI: bool
                     unsafe { continuity_chunk_avx2::<RIEMANN, CORRECTED, MULTI>(&ctx, out, list) };
                     return;
                 }
-                continuity_chunk::<RIEMANN, CORRECTED, MULTI>(&ctx, out, list);
+                if RIEMANN {
+                    riemann_continuity_chunk::<CORRECTED, MULTI>(&ctx, out, list);
+                } else {
+                    continuity_chunk::<CORRECTED, MULTI>(&ctx, out, list);
+                }
             });
     }
     pt.rate = out;
@@ -96,8 +105,6 @@ struct ContinuityChunk<'a> {
     kernel: WendlandC2,
     pairs: PairKernels,
     delta_term: f64,
-    c0: f64,
-    rho0_g: f64,
 }
 
 /// [`continuity_chunk`] compiled with AVX2.
@@ -108,12 +115,89 @@ fn continuity_chunk_avx2<const RIEMANN: bool, const CORRECTED: bool, const MULTI
     out: &mut [[f64; 3]],
     list: &ChunkLists,
 ) {
-    continuity_chunk::<RIEMANN, CORRECTED, MULTI>(ctx, out, list)
+    if RIEMANN {
+        riemann_continuity_chunk::<CORRECTED, MULTI>(ctx, out, list)
+    } else {
+        continuity_chunk::<CORRECTED, MULTI>(ctx, out, list)
+    }
 }
 
-/// The continuity pass over chunk `ctx.c` of the particles.
+/// The continuity pass of the Riemann scheme over chunk `ctx.c` of the particles: the velocity
+/// divergence in batches of neighbours, plus the dissipation sum the momentum pass left in `out[2]`.
 #[inline(always)]
-fn continuity_chunk<const RIEMANN: bool, const CORRECTED: bool, const MULTI: bool>(
+fn riemann_continuity_chunk<const CORRECTED: bool, const MULTI: bool>(
+    ctx: &ContinuityChunk,
+    out: &mut [[f64; 3]],
+    list: &ChunkLists,
+) {
+    let ContinuityChunk {
+        c,
+        pt,
+        level,
+        kernel,
+        pairs,
+        ..
+    } = *ctx;
+    let mut b = Kinematics::default();
+    let mut t = KinematicTerms::default();
+    for (k, out) in out.iter_mut().enumerate() {
+        let i = c * LIST_CHUNK + k;
+        if pt.kind[i] != Kind::Fluid {
+            out[2] = 0.0;
+            continue;
+        }
+        let (yi, zi, vyi, vzi, rho_i) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i], pt.rho[i]);
+        let (k0, k1) = if MULTI {
+            (*pairs.pair(level[i], 0), *pairs.pair(level[i], 1))
+        } else {
+            (kernel, kernel)
+        };
+        let mut corrected = kernel_correction::DivergenceSums::default();
+        let mut div = 0.0;
+        for tags in list.tags(k).chunks(KINEMATIC_BATCH) {
+            b.gather::<MULTI>(tags, &pt, level);
+            for l in 0..KINEMATIC_BATCH {
+                let dy = yi - b.y[l];
+                let dz = zi - b.z[l];
+                let r = (dy * dy + dz * dz).sqrt();
+                let f = if MULTI && b.coarse[l] {
+                    k1.grad_factor_lane(r)
+                } else {
+                    k0.grad_factor_lane(r)
+                };
+                let fw = f * b.vol[l];
+                let (dvy, dvz) = (vyi - b.vy[l], vzi - b.vz[l]);
+                let (m, g) = (&mut t.moment, &mut t.gradient);
+                if CORRECTED {
+                    let (fy, fz) = (fw * dy, fw * dz);
+                    (m[0][l], m[1][l], m[2][l]) = (fy * dy, fy * dz, fz * dz);
+                    (g[0][l], g[1][l], g[2][l], g[3][l]) = (fy * dvy, fy * dvz, fz * dvy, fz * dvz);
+                } else {
+                    m[0][l] = fw * (dvy * dy + dvz * dz);
+                }
+            }
+            let (m, g) = (&t.moment, &t.gradient);
+            for l in 0..tags.len() {
+                if CORRECTED {
+                    corrected.add_products(
+                        [m[0][l], m[1][l], m[2][l]],
+                        [g[0][l], g[1][l], g[2][l], g[3][l]],
+                    );
+                } else {
+                    div += m[0][l];
+                }
+            }
+        }
+        if CORRECTED {
+            div = corrected.corrected();
+        }
+        out[2] = rho_i * div + rho_i * out[2];
+    }
+}
+
+/// The continuity pass of the delta-SPH scheme over chunk `ctx.c` of the particles.
+#[inline(always)]
+fn continuity_chunk<const CORRECTED: bool, const MULTI: bool>(
     ctx: &ContinuityChunk,
     out: &mut [[f64; 3]],
     list: &ChunkLists,
@@ -126,8 +210,6 @@ fn continuity_chunk<const RIEMANN: bool, const CORRECTED: bool, const MULTI: boo
         kernel,
         pairs,
         delta_term,
-        c0,
-        rho0_g,
     } = *ctx;
     for (k, out) in out.iter_mut().enumerate() {
         let i = c * LIST_CHUNK + k;
@@ -135,16 +217,13 @@ fn continuity_chunk<const RIEMANN: bool, const CORRECTED: bool, const MULTI: boo
             out[2] = 0.0;
             continue;
         }
-        let (yi, zi, vyi, vzi, rho_i, p_i) =
-            (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i], pt.rho[i], pt.p[i]);
+        let (yi, zi, vyi, vzi, rho_i) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i], pt.rho[i]);
         // The kernels of i's pairs with a base-resolution and with a coarse neighbour.
         let (k0, k1) = if MULTI {
             (*pairs.pair(level[i], 0), *pairs.pair(level[i], 1))
         } else {
             (kernel, kernel)
         };
-        // Riemann dissipation is scaled by rho_i, delta-SPH by delta h c0.
-        let diff_scale = if RIEMANN { rho_i } else { delta_term };
         let gi = grad_rho[i];
         let mut corrected = kernel_correction::DivergenceSums::default();
         let (mut div, mut diff) = (0.0, 0.0);
@@ -170,19 +249,7 @@ fn continuity_chunk<const RIEMANN: bool, const CORRECTED: bool, const MULTI: boo
             }
             // Diffusion only between fluid particles: a flux to a dummy particle would be a mass
             // flux through the wall.
-            let fluid = is_fluid(tag);
-            if fluid && RIEMANN {
-                diff += riemann::continuity_term(
-                    p_i,
-                    pt.p[j],
-                    rho_i,
-                    pt.rho[j],
-                    fw,
-                    r,
-                    c0,
-                    -rho0_g * dz,
-                );
-            } else if fluid {
+            if is_fluid(tag) {
                 let gj = if mirrored {
                     [-grad_rho[j][0], grad_rho[j][1]]
                 } else {
@@ -195,6 +262,6 @@ fn continuity_chunk<const RIEMANN: bool, const CORRECTED: bool, const MULTI: boo
         if CORRECTED {
             div = corrected.corrected();
         }
-        out[2] = rho_i * div + diff_scale * diff;
+        out[2] = rho_i * div + delta_term * diff;
     }
 }

@@ -89,12 +89,25 @@ impl DivergenceSums {
     /// = F_ij V_j.
     #[inline(always)]
     pub fn add(&mut self, fv: f64, dy: f64, dz: f64, dvy: f64, dvz: f64) {
-        self.b.add(fv, dy, dz);
         let (fy, fz) = (fv * dy, fv * dz);
-        self.yy += fy * dvy;
-        self.yz += fy * dvz;
-        self.zy += fz * dvy;
-        self.zz += fz * dvz;
+        self.add_products(
+            [fy * dy, fy * dz, fz * dz],
+            [fy * dvy, fy * dvz, fz * dvy, fz * dvz],
+        );
+    }
+
+    /// [`DivergenceSums::add`] with its products computed beforehand (by the batched pair loop):
+    /// `moment` = F V_j (dy dy, dy dz, dz dz), `gradient` = F V_j (dy dvy, dy dvz, dz dvy, dz dvz), each
+    /// product formed as (F V_j dy) dvy etc.
+    #[inline(always)]
+    pub fn add_products(&mut self, moment: [f64; 3], gradient: [f64; 4]) {
+        self.b.yy -= moment[0];
+        self.b.yz -= moment[1];
+        self.b.zz -= moment[2];
+        self.yy += gradient[0];
+        self.yz += gradient[1];
+        self.zy += gradient[2];
+        self.zz += gradient[3];
     }
 
     /// sum_j V_j F_ij (u_i - u_j) . B_i^-1 r_ij = tr(B_i^-1 G_i).

@@ -80,6 +80,7 @@ fn momentum_pass<const RIEMANN: bool, const GRAD: bool, const VISCOUS: bool, con
     let c0 = s.c0;
     let eps2 = 0.01 * h * h;
     let g = s.g;
+    let rho0_g = s.rho0 * s.g;
     lists.resize(pt.len());
     let avx2 = has_avx2();
     let mut out = std::mem::take(&mut pt.rate);
@@ -103,6 +104,7 @@ fn momentum_pass<const RIEMANN: bool, const GRAD: bool, const VISCOUS: bool, con
                     c0,
                     eps2,
                     g,
+                    rho0_g,
                 };
                 #[cfg(target_arch = "x86_64")]
                 if avx2 {
@@ -133,6 +135,7 @@ struct MomentumChunk<'a> {
     c0: f64,
     eps2: f64,
     g: f64,
+    rho0_g: f64,
 }
 
 /// [`momentum_chunk`] compiled with AVX2.
@@ -171,6 +174,7 @@ fn momentum_chunk<const RIEMANN: bool, const GRAD: bool, const VISCOUS: bool, co
         c0,
         eps2,
         g,
+        rho0_g,
     } = *ctx;
     list.clear();
     let mut count = 0u64;
@@ -179,8 +183,7 @@ fn momentum_chunk<const RIEMANN: bool, const GRAD: bool, const VISCOUS: bool, co
     for (k, (out, grad)) in out.iter_mut().zip(grad.iter_mut()).enumerate() {
         let i = c * LIST_CHUNK + k;
         if pt.kind[i] != Kind::Fluid {
-            out[0] = 0.0;
-            out[1] = 0.0;
+            *out = [0.0; 3];
             *grad = [0.0; 2];
             list.end_particle();
             continue;
@@ -205,6 +208,8 @@ fn momentum_chunk<const RIEMANN: bool, const GRAD: bool, const VISCOUS: bool, co
         };
         let entries = list.last_entries();
         let (mut ay, mut az, mut vy_acc, mut vz_acc) = (0.0, 0.0, 0.0, 0.0);
+        // The Riemann continuity dissipation (see `out[2]` below).
+        let mut diff = 0.0;
         let mut sums = antuono2010::GradientSums::default();
         count += entries.len() as u64;
         for tags in entries.chunks_mut(BATCH) {
@@ -235,6 +240,10 @@ fn momentum_chunk<const RIEMANN: bool, const GRAD: bool, const VISCOUS: bool, co
                     let vdotd = dvy * dy + dvz * dz;
                     t.c[l] = vdotd / (r2 + eps2) * fw;
                 }
+                if RIEMANN {
+                    let dp_hydro = -rho0_g * dz;
+                    t.c[l] = riemann::continuity_term(p_i, b.p[l], rho_i, b.rho[l], fw, r, c0, dp_hydro);
+                }
                 (t.dy[l], t.dz[l], t.fw[l]) = (dy, dz, fw);
             }
             for l in 0..nb {
@@ -247,12 +256,21 @@ fn momentum_chunk<const RIEMANN: bool, const GRAD: bool, const VISCOUS: bool, co
                     vy_acc += t.c[l] * t.dy[l];
                     vz_acc += t.c[l] * t.dz[l];
                 }
+                if RIEMANN && b.fluid[l] {
+                    diff += t.c[l];
+                }
             }
         }
         list.end_particle();
         let inv_rho = 1.0 / rho_i;
         out[0] = (ay + visc * vy_acc) * inv_rho;
         out[1] = (az + visc * vz_acc) * inv_rho - g;
+        // The density rate's slot holds, until the next continuity pass (which runs at these same
+        // positions and densities, [`crate::sph::integrator`]), the Riemann dissipation sum of its
+        // density rate, which needs no velocities ([`crate::sph::continuity_pass`]).
+        if RIEMANN {
+            out[2] = diff;
+        }
         *grad = if GRAD { sums.gradient() } else { [0.0; 2] };
     }
     count
