@@ -1,13 +1,14 @@
 //! Batches of neighbours for the pair loops of [`crate::sph::rates`].
 //!
-//! A pair loop runs in three stages over batches of [`BATCH`] neighbours of one particle: the
-//! neighbours' state is gathered into small fixed-length arrays (with the mirror image's sign applied:
-//! y -> -y, v_y -> -v_y), the pair terms are computed lane by lane over the whole batch (a loop without
-//! gathers or early exits that the compiler vectorises: the square roots and divisions of several pairs
-//! go through one vector instruction), and the terms are summed into the particle's accumulators one by
-//! one in the neighbour order. Every term is computed with the same operations as one pair at a time
-//! (IEEE arithmetic is the same in every lane, and Rust never fuses a multiply and an add), and the sums
-//! keep the list order, so the results are bit-identical to a plain loop over the neighbours.
+//! A pair loop runs in three stages over batches of neighbours of one particle ([`BATCH`] in the
+//! momentum pass, [`KINEMATIC_BATCH`] in the continuity pass): the neighbours' state is gathered into
+//! small fixed-length arrays (with the mirror image's sign applied: y -> -y, v_y -> -v_y), the pair
+//! terms are computed lane by lane over the whole batch (a loop without gathers or early exits that the
+//! compiler vectorises: the square roots and divisions of several pairs go through one vector
+//! instruction), and the terms are summed into the particle's accumulators one by one in the neighbour
+//! order. Every term is computed with the same operations as one pair at a time (IEEE arithmetic is the
+//! same in every lane, and Rust never fuses a multiply and an add), and the sums keep the list order,
+//! so the results are bit-identical to a plain loop over the neighbours.
 //!
 //! For a mirror image the gathered y is -y_j, and r_i - r_j' = y_i - (-y_j) = y_i + y_j exactly (an IEEE
 //! subtraction is the addition of the negated operand).
@@ -99,7 +100,13 @@ impl Kinematics {
     #[inline(always)]
     pub fn gather<const MULTI: bool>(&mut self, tags: &[u32], pt: &View, level: &[u8]) {
         let n = pt.y.len();
-        let (y, z, vy, vz, vol) = (&pt.y[..n], &pt.z[..n], &pt.vy[..n], &pt.vz[..n], &pt.vol[..n]);
+        let (y, z, vy, vz, vol) = (
+            &pt.y[..n],
+            &pt.z[..n],
+            &pt.vy[..n],
+            &pt.vz[..n],
+            &pt.vol[..n],
+        );
         for (l, &t) in tags.iter().enumerate().take(KINEMATIC_BATCH) {
             let (j, mirrored) = neighbour(t);
             assert!(j < n);

@@ -1,8 +1,10 @@
 //! The two passes over the neighbour lists that give the time derivatives of the fluid particles: the
 //! momentum pass (with the neighbour search that fills the lists; here) and the continuity pass (which
-//! reuses them; [`crate::sph::continuity_pass`]). The equations are stated in [`crate::sph::solver`]. Every sum is a gather over the neighbours
-//! of one particle in the fixed cell-sorted order, so the results are bit-identical on any number of
-//! threads.
+//! reuses them; [`crate::sph::continuity_pass`]). With the Riemann scheme the momentum pass also sums the
+//! velocity-free dissipation term of the continuity equation, whose pair distances, kernel factors,
+//! pressures and densities it has at hand, for the continuity pass that follows at the same state. The
+//! equations are stated in [`crate::sph::solver`]. Every sum is a gather over the neighbours of one
+//! particle in the fixed cell-sorted order, so the results are bit-identical on any number of threads.
 //!
 //! (Evaluating each fluid pair once and scattering its share to the neighbour, in band-coloured phases
 //! to stay deterministic, was tried and measured: it was no faster here, because the neighbour search and
@@ -242,7 +244,8 @@ fn momentum_chunk<const RIEMANN: bool, const GRAD: bool, const VISCOUS: bool, co
                 }
                 if RIEMANN {
                     let dp_hydro = -rho0_g * dz;
-                    t.c[l] = riemann::continuity_term(p_i, b.p[l], rho_i, b.rho[l], fw, r, c0, dp_hydro);
+                    t.c[l] =
+                        riemann::continuity_term(p_i, b.p[l], rho_i, b.rho[l], fw, r, c0, dp_hydro);
                 }
                 (t.dy[l], t.dz[l], t.fw[l]) = (dy, dz, fw);
             }

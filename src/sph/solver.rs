@@ -80,7 +80,8 @@ pub struct Simulation {
     grid: Grid,
     /// Neighbour lists of the last momentum pass, reused by the next continuity pass.
     lists: NeighbourLists,
-    /// Whether `lists` belong to the current positions and storage order.
+    /// Whether the last momentum pass ran at the current positions and storage order and no continuity
+    /// pass has used it yet (its lists and dissipation sums are those of the current state).
     lists_fresh: bool,
     section: Option<Section>,
     motion: Option<Motion>,
@@ -263,18 +264,22 @@ impl Simulation {
         [0.0, -self.body.a_down]
     }
 
-    /// Continuity pass at the current positions: density rates (with the density gradients and the
-    /// neighbour lists of the last momentum pass, which ran at these same positions and densities).
+    /// Continuity pass at the current positions: density rates (with the density gradients, the
+    /// neighbour lists and the Riemann dissipation sums of the last momentum pass, which ran at these
+    /// same positions and densities). Once per momentum pass: the pass consumes the dissipation sums the
+    /// momentum pass left in the density rates, so a second one without a momentum pass between them is
+    /// refused like one after a drift.
     fn evaluate_continuity(&mut self) {
         assert!(
             self.lists_fresh,
-            "continuity pass without the neighbour lists of the current positions"
+            "continuity pass without a momentum pass at the current positions"
         );
         let (lists, kernel) = (&self.lists, &self.kernel);
         let pt = &mut self.pt;
         let s = &self.setup;
         self.counters
             .time(Stage::Continuity, || continuity_rates(lists, pt, kernel, s));
+        self.lists_fresh = false;
     }
 
     /// Momentum pass at the current positions: wall and body pressures, then accelerations and the
