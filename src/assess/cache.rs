@@ -182,17 +182,13 @@ pub fn keep_failed(out: &Path, key: &str, tmp: &Path, err: Error) -> Error {
     if !moved {
         let _ = std::fs::remove_dir_all(tmp);
     }
-    let (from, to) = (tmp.display().to_string(), kept.display().to_string());
-    let name = |m: String| {
-        if moved {
-            m.replace(&from, &to)
-        } else {
-            m.replace(
-                &format!("; histories so far written to {from}"),
-                "; its histories could not be kept",
-            )
-        }
+    let from = crate::sph::histories_kept_in(tmp);
+    let to = if moved {
+        crate::sph::histories_kept_in(&kept)
+    } else {
+        "; its histories could not be kept".to_string()
     };
+    let name = |m: String| m.replace(&from, &to);
     match err {
         Error::Numerical(m) => Error::Numerical(name(m)),
         Error::Invalid(m) => Error::Invalid(name(m)),
@@ -390,8 +386,8 @@ mod tests {
         let tmp = temporary(&out, "kkk").unwrap();
         std::fs::write(tmp.join("history.csv"), "t,p\n0,1\n").unwrap();
         let err = Error::Numerical(format!(
-            "SPH run 'x' stopped at t = 0.1 s: diverged; histories so far written to {}",
-            tmp.display()
+            "SPH run 'x' stopped at t = 0.1 s: diverged{}",
+            crate::sph::histories_kept_in(&tmp)
         ));
         let err = keep_failed(&out, "kkk", &tmp, err).to_string();
         let kept = failed_dir(&out, "kkk");

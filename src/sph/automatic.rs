@@ -315,15 +315,16 @@ pub fn sound_speed(section: &Section, v_max: f64, g: f64, tank_depth: f64) -> Ch
 }
 
 /// Mach number of Wagner's wetted contact, dc/dt / c0 with dc/dt = (pi/2) V cot(beta) (constant-speed
-/// wedge of deadrise beta; Wagner 1932): the automatic c0 puts it at
-/// (pi/2) cot(beta) / sqrt((pi^2/4) cot^2(beta) / (2 delta)) = sqrt(2 delta) = 0.14 wherever the pressure
-/// bound sets c0. The load error of weakly compressible SPH measured against the similarity solution
-/// falls in proportion to it (docs/numerics/wedge-convergence.md, item 10).
+/// wedge of deadrise beta; Wagner 1932, [`crate::analytic::wagner::wetted_half_width`] per unit time):
+/// the automatic c0 puts it at (pi/2) cot(beta) / sqrt((pi^2/4) cot^2(beta) / (2 delta)) = sqrt(2 delta)
+/// = 0.14 wherever the pressure bound sets c0. The load error of weakly compressible SPH measured against
+/// the similarity solution falls in proportion to it (docs/numerics/wedge-convergence.md, item 10). 0
+/// outside 0 < beta < 90 deg (no wetted contact to speak of) and for c0 <= 0.
 pub fn contact_mach(v: f64, beta: f64, c0: f64) -> f64 {
-    if beta >= std::f64::consts::FRAC_PI_2 || c0 <= 0.0 {
-        return 0.0;
+    match crate::analytic::wagner::wetted_half_width(beta, v, 1.0) {
+        Ok(contact_speed) if c0 > 0.0 => contact_speed / c0,
+        _ => 0.0,
     }
-    std::f64::consts::FRAC_PI_2 * v / beta.tan() / c0
 }
 
 #[cfg(test)]
@@ -354,6 +355,7 @@ mod tests {
             assert!(c.note.contains(&format!("{m:.3}")), "{}", c.note);
         }
         assert_eq!(contact_mach(5.0, std::f64::consts::FRAC_PI_2, 100.0), 0.0);
+        assert_eq!(contact_mach(5.0, 0.0, 100.0), 0.0);
     }
 
     /// On a steep wedge Wagner's pile-up (pi/2) would end the run before the calm-water line reaches

@@ -148,6 +148,13 @@ pub struct RunSummary {
     pub provenance: Option<crate::provenance::Provenance>,
 }
 
+/// The clause that ends the error of a stopped run written to `dir`: where its histories are. Whoever
+/// moves that folder (the assessment keeps a failed run's, `assess::cache::keep_failed`) rewrites the
+/// clause with this same function.
+pub fn histories_kept_in(dir: &std::path::Path) -> String {
+    format!("; histories so far written to {}", dir.display())
+}
+
 /// The outcome of [`run`]: the summary and the full histories.
 #[derive(Debug, Clone)]
 pub struct RunResult {
@@ -232,9 +239,10 @@ pub fn run(setup: Setup, opts: &RunOptions) -> Result<RunResult> {
         }
     }
     if let Some(why) = stopped {
-        let where_ = opts.out_dir.as_ref().map_or(String::new(), |d| {
-            format!("; histories so far written to {}", d.display())
-        });
+        let where_ = opts
+            .out_dir
+            .as_ref()
+            .map_or(String::new(), |d| histories_kept_in(d));
         return Err(Error::Numerical(format!(
             "SPH run '{}' stopped at t = {:.6} s: {why}{where_}",
             sim.setup.name, sim.time
