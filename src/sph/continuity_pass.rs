@@ -85,11 +85,7 @@ fn continuity_pass<const RIEMANN: bool, const CORRECTED: bool, const MULTI: bool
                     unsafe { continuity_chunk_avx2::<RIEMANN, CORRECTED, MULTI>(&ctx, out, list) };
                     return;
                 }
-                if RIEMANN {
-                    riemann_continuity_chunk::<CORRECTED, MULTI>(&ctx, out, list);
-                } else {
-                    continuity_chunk::<CORRECTED, MULTI>(&ctx, out, list);
-                }
+                continuity_chunk::<RIEMANN, CORRECTED, MULTI>(&ctx, out, list);
             });
     }
     pt.rate = out;
@@ -115,10 +111,20 @@ fn continuity_chunk_avx2<const RIEMANN: bool, const CORRECTED: bool, const MULTI
     out: &mut [[f64; 3]],
     list: &ChunkLists,
 ) {
+    continuity_chunk::<RIEMANN, CORRECTED, MULTI>(ctx, out, list)
+}
+
+/// The continuity pass over chunk `ctx.c` of the particles, for the scheme.
+#[inline(always)]
+fn continuity_chunk<const RIEMANN: bool, const CORRECTED: bool, const MULTI: bool>(
+    ctx: &ContinuityChunk,
+    out: &mut [[f64; 3]],
+    list: &ChunkLists,
+) {
     if RIEMANN {
         riemann_continuity_chunk::<CORRECTED, MULTI>(ctx, out, list)
     } else {
-        continuity_chunk::<CORRECTED, MULTI>(ctx, out, list)
+        delta_sph_continuity_chunk::<CORRECTED, MULTI>(ctx, out, list)
     }
 }
 
@@ -147,11 +153,7 @@ fn riemann_continuity_chunk<const CORRECTED: bool, const MULTI: bool>(
             continue;
         }
         let (yi, zi, vyi, vzi, rho_i) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i], pt.rho[i]);
-        let (k0, k1) = if MULTI {
-            (*pairs.pair(level[i], 0), *pairs.pair(level[i], 1))
-        } else {
-            (kernel, kernel)
-        };
+        let (k0, k1) = pairs.of_particle::<MULTI>(kernel, level[i]);
         let mut corrected = kernel_correction::DivergenceSums::default();
         let mut div = 0.0;
         for tags in list.tags(k).chunks(KINEMATIC_BATCH) {
@@ -197,7 +199,7 @@ fn riemann_continuity_chunk<const CORRECTED: bool, const MULTI: bool>(
 
 /// The continuity pass of the delta-SPH scheme over chunk `ctx.c` of the particles.
 #[inline(always)]
-fn continuity_chunk<const CORRECTED: bool, const MULTI: bool>(
+fn delta_sph_continuity_chunk<const CORRECTED: bool, const MULTI: bool>(
     ctx: &ContinuityChunk,
     out: &mut [[f64; 3]],
     list: &ChunkLists,
@@ -219,11 +221,7 @@ fn continuity_chunk<const CORRECTED: bool, const MULTI: bool>(
         }
         let (yi, zi, vyi, vzi, rho_i) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i], pt.rho[i]);
         // The kernels of i's pairs with a base-resolution and with a coarse neighbour.
-        let (k0, k1) = if MULTI {
-            (*pairs.pair(level[i], 0), *pairs.pair(level[i], 1))
-        } else {
-            (kernel, kernel)
-        };
+        let (k0, k1) = pairs.of_particle::<MULTI>(kernel, level[i]);
         let gi = grad_rho[i];
         let mut corrected = kernel_correction::DivergenceSums::default();
         let (mut div, mut diff) = (0.0, 0.0);

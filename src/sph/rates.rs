@@ -203,11 +203,7 @@ fn momentum_chunk<const RIEMANN: bool, const GRAD: bool, const VISCOUS: bool, co
             list.push_candidates(grid, pt.y, pt.z, yi, zi, i, kernel.support2());
         }
         // The kernels of i's pairs with a base-resolution and with a coarse neighbour.
-        let (k0, k1) = if MULTI {
-            (*pairs.pair(li, 0), *pairs.pair(li, 1))
-        } else {
-            (kernel, kernel)
-        };
+        let (k0, k1) = pairs.of_particle::<MULTI>(kernel, li);
         let entries = list.last_entries();
         let (mut ay, mut az, mut vy_acc, mut vz_acc) = (0.0, 0.0, 0.0, 0.0);
         // The Riemann continuity dissipation (see `out[2]` below).

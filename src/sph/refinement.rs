@@ -50,6 +50,21 @@ impl PairKernels {
         &self.k[(li + lj) as usize]
     }
 
+    /// The kernels of a level-`li` particle's pairs with a base-resolution and with a coarse neighbour;
+    /// with one resolution (`MULTI` false) the `uniform` kernel for both.
+    #[inline(always)]
+    pub fn of_particle<const MULTI: bool>(
+        &self,
+        uniform: WendlandC2,
+        li: u8,
+    ) -> (WendlandC2, WendlandC2) {
+        if MULTI {
+            (*self.pair(li, 0), *self.pair(li, 1))
+        } else {
+            (uniform, uniform)
+        }
+    }
+
     /// The largest squared support of any pair of a particle of `level`: (2 h_ij)^2 with a coarse
     /// partner.
     #[inline(always)]
