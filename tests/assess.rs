@@ -208,7 +208,12 @@ fn screen_runs_sph_for_one_event_per_station() {
             let shown = matches!(d.verdict.as_deref(), Some("converged") | Some("acceptable"));
             if !shown {
                 // an unconverged (or unresolved) SPH peak never lowers the design below analytic
-                assert!(d.value >= d.analytic.unwrap() - 1e-9, "{d:?}");
+                // (none only where neither SPH nor the analytic models compute the impact)
+                match (d.value, d.analytic) {
+                    (Some(v), Some(a)) => assert!(v >= a - 1e-9, "{d:?}"),
+                    (None, a) => assert!(a.is_none() && d.source.starts_with("none"), "{d:?}"),
+                    (Some(_), None) => {}
+                }
             }
             if d.source.starts_with("sph") {
                 // an SPH design value is a slamming peak: inside its impact window, out of the record's
@@ -223,7 +228,7 @@ fn screen_runs_sph_for_one_event_per_station() {
                     .unwrap();
                 let (t, w) = (q.slamming_peak_time_s.unwrap(), q.impact_window_s.unwrap());
                 assert!(t >= w[0] && t <= w[1], "{q:?}");
-                assert!(d.value >= q.slamming_peak_pa.unwrap(), "{d:?}");
+                assert!(d.value.unwrap() >= q.slamming_peak_pa.unwrap(), "{d:?}");
             }
         }
     }

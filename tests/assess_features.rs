@@ -349,7 +349,7 @@ fn irregular_seas_give_design_events_that_state_their_definition() {
         assert!(
             e.analytic
                 .as_ref()
-                .is_some_and(|x| x.force_peak_n_per_m > 0.0)
+                .is_some_and(|x| x.force_peak_n_per_m.is_some_and(|f| f > 0.0))
         );
     }
     let d = tempfile::tempdir().unwrap();

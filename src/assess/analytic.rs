@@ -36,6 +36,18 @@ pub struct SensorEstimate {
     /// The MLM peak without the wedge-equivalent correction (Pa).
     #[serde(default)]
     pub uncorrected_peak_pa: Option<f64>,
+    /// Whether the panel's only values are the decay of a singular start (a panel on a flat keel, or
+    /// below the waterline of an immersed start: wetted at once, its pressure falls from infinity), so
+    /// that the models give it no peak; `peak_pa` is then 0.
+    #[serde(default)]
+    pub no_peak_after_start: bool,
+}
+
+impl SensorEstimate {
+    /// The analytic peak (Pa), `None` where the models give none ([`SensorEstimate::no_peak_after_start`]).
+    pub fn peak(&self) -> Option<f64> {
+        (!self.no_peak_after_start).then_some(self.peak_pa)
+    }
 }
 
 /// What the reports say of the corrected analytic sensor pressures (the errors measured in
@@ -58,9 +70,11 @@ pub fn correction_note() -> String {
 /// The analytic estimate of one event.
 #[derive(Debug, Clone, Serialize, Deserialize, PartialEq)]
 pub struct Estimate {
-    /// Generalised Wagner section force (N/m): peak and time.
-    pub force_peak_n_per_m: f64,
-    pub force_peak_time_s: f64,
+    /// Generalised Wagner section force (N/m): peak and time; `None` where Wagner gives no peak (a flat
+    /// keel or an immersed start whose force only decays after its singular start:
+    /// [`generalised_wagner::WagnerEstimate::force_peak`]).
+    pub force_peak_n_per_m: Option<f64>,
+    pub force_peak_time_s: Option<f64>,
     /// MLM mean pressure on each sensor panel.
     pub sensors: Vec<SensorEstimate>,
     /// Where the models stop or switch to acoustic values.
@@ -75,7 +89,7 @@ impl Estimate {
     /// The largest sensor peak, or the force peak when there are no sensors (to rank events).
     pub fn ranking(&self) -> f64 {
         if self.sensors.is_empty() {
-            self.force_peak_n_per_m
+            self.force_peak_n_per_m.unwrap_or(0.0)
         } else {
             self.sensors.iter().map(|s| s.peak_pa).fold(0.0, f64::max)
         }
@@ -97,11 +111,31 @@ pub(super) fn samples(motion: &MotionSpec) -> Result<(Vec<f64>, Vec<f64>)> {
 }
 
 /// Peak of (t, x) over the samples not flagged `acoustic`, with the impulse over the whole record.
-fn peak_outside(t: &[f64], x: &[f64], acoustic: &[bool]) -> crate::loads::peaks::Peak {
+/// After a `singular` start (a flat keel, or an immersed start: the wetted width starts finite with
+/// dc/dt unbounded) a record that starts wetted falls from infinity, and only the samples from its
+/// first rise on can carry a peak (as for the Wagner force,
+/// [`generalised_wagner::WagnerEstimate::force_peak`]); the flag is true when none is left.
+fn peak_outside(
+    t: &[f64],
+    x: &[f64],
+    acoustic: &[bool],
+    singular: bool,
+) -> (crate::loads::peaks::Peak, bool) {
     let mut p = peak(t, x);
-    let best = (0..t.len().min(x.len()))
+    let mut kept: Vec<usize> = (0..t.len().min(x.len()))
         .filter(|&k| !acoustic.get(k).copied().unwrap_or(false))
-        .max_by(|&a, &b| x[a].total_cmp(&x[b]));
+        .collect();
+    let mut none_left = false;
+    if singular && kept.first().is_some_and(|&k| x[k] > 0.0) {
+        match kept.windows(2).position(|w| x[w[1]] > x[w[0]]) {
+            Some(i) => kept.drain(..i),
+            None => {
+                none_left = true;
+                kept.drain(..)
+            }
+        };
+    }
+    let best = kept.into_iter().max_by(|&a, &b| x[a].total_cmp(&x[b]));
     match best {
         Some(k) => {
             p.value = x[k];
@@ -112,7 +146,7 @@ fn peak_outside(t: &[f64], x: &[f64], acoustic: &[bool]) -> crate::loads::peaks:
             p.time = 0.0;
         }
     }
-    p
+    (p, none_left)
 }
 
 /// Largest number of samples of an event's analytic histories after [`densify`].
@@ -199,7 +233,7 @@ pub fn estimate_in(case: &EntryCase, rho: f64) -> Result<Estimate> {
     };
     let w = generalised_wagner::estimate_immersed(&case.half_points, d0, &t, &v, rho)?;
     // Peaks of the models' own values: samples at the acoustic limit are the water-hammer bound.
-    let (force_peak, force_time) = w.force_peak().unwrap_or((0.0, 0.0));
+    let force = w.force_peak();
     let mut notes = w.notes.clone();
     if let Some(why) = &w.stopped {
         notes.push(format!("Wagner estimate stops early: {why}"));
@@ -255,8 +289,8 @@ pub fn estimate_in(case: &EntryCase, rho: f64) -> Result<Estimate> {
         .iter()
         .zip(histories.iter().zip(&raw_histories))
         .map(|(s, (history, raw))| {
-            let p = peak_outside(&times, history, &acoustic);
-            let p_raw = peak_outside(&times, raw, &acoustic);
+            let (p, no_peak) = peak_outside(&times, history, &acoustic, w.singular_start);
+            let (p_raw, _) = peak_outside(&times, raw, &acoustic, w.singular_start);
             let bound = history
                 .iter()
                 .zip(&acoustic)
@@ -270,6 +304,7 @@ pub fn estimate_in(case: &EntryCase, rho: f64) -> Result<Estimate> {
                 impulse_pa_s: p.impulse,
                 acoustic_bound_pa: bound,
                 uncorrected_peak_pa: Some(p_raw.value),
+                no_peak_after_start: no_peak,
             }
         })
         .collect();
@@ -278,12 +313,39 @@ pub fn estimate_in(case: &EntryCase, rho: f64) -> Result<Estimate> {
         .map(|k| [w.t[k], w.force[k]])
         .collect();
     Ok(Estimate {
-        force_peak_n_per_m: force_peak,
-        force_peak_time_s: force_time,
+        force_peak_n_per_m: force.map(|f| f.0),
+        force_peak_time_s: force.map(|f| f.1),
         sensors,
         notes,
         force_history,
     })
+}
+
+#[cfg(test)]
+mod peak_tests {
+    use super::peak_outside;
+
+    #[test]
+    fn a_record_falling_from_a_singular_start_has_no_peak() {
+        let t = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0];
+        let acoustic = [true, false, false, false, false, false];
+        // wetted at once and only decaying: no peak after the start
+        let decay = [9e9, 500.0, 300.0, 200.0, 150.0, 120.0];
+        let (_, none) = peak_outside(&t, &decay, &acoustic, true);
+        assert!(none);
+        // decaying, then the contact loads the panel again: the peak is the later one
+        let later = [9e9, 500.0, 300.0, 200.0, 350.0, 280.0];
+        let (p, none) = peak_outside(&t, &later, &acoustic, true);
+        assert!(!none);
+        assert_eq!((p.value, p.time), (350.0, 4.0));
+        // a panel dry at the start is not affected
+        let dry = [0.0, 0.0, 100.0, 400.0, 300.0, 200.0];
+        let (p, none) = peak_outside(&t, &dry, &acoustic, true);
+        assert!(!none && p.value == 400.0);
+        // without a singular start the largest kept sample is the peak, as before
+        let (p, _) = peak_outside(&t, &decay, &acoustic, false);
+        assert_eq!(p.value, 500.0);
+    }
 }
 
 #[cfg(test)]

@@ -136,7 +136,12 @@ pub fn of_events(events: &[&EventResult], entry: &[Option<f64>], period: f64) ->
     let stations: Vec<StationForce> = events
         .iter()
         .map(|e| {
-            let (v, src) = e.force_peak().unwrap_or((0.0, "no-emergence"));
+            let none = if e.entry_velocity_m_per_s.is_some() {
+                "none (no force peak: a flat keel's Wagner force only decays)"
+            } else {
+                "no-emergence"
+            };
+            let (v, src) = e.force_peak().unwrap_or((0.0, none));
             StationForce {
                 station: e.station,
                 x_m: e.x_m,

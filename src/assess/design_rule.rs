@@ -13,11 +13,17 @@
 //! * SPH resolved but not shown converged (not converged, companion peak another event, or one
 //!   level only): design = max(P + U, A), whichever is larger (source `sph (not converged)` or
 //!   `analytic (SPH not converged)`): an unconverged SPH peak never lowers the design below the
-//!   analytic estimate;
+//!   analytic estimate. Where the companion's peak is another event (verdict `mismatched`) there is
+//!   no GCI; U is then the difference between the two levels' peaks, |P - P_2|, so that the design
+//!   value is at least the larger of the two (a rule of this tool: an unconverged value must not
+//!   carry less margin than a converged one);
 //! * SPH does not compute the impact (the contact crosses the sensor inside the contact transient, at an
 //!   acoustic speed on a flat keel, after the run, or never): design = A, labelled with the reason; on a
 //!   flat keel the water-hammer pressure rho c_w V (c_w the real sound speed of water) is stated beside it
 //!   as the upper bound of an impact without air, and the air cushion is left to the two-phase model;
+//!   where the analytic models give no peak either (a panel on a flat keel is wetted at once, and
+//!   their pressure only falls from the singular start), there is **no design value**: source
+//!   [`NO_VALUE_FLAT_KEEL`], value `None`, and the reports say so rather than print a number;
 //! * a sensor the SPH water did not reach with a slamming pressure ([`super::results::DRY_FRACTION`]):
 //!   design = A (source `analytic (dry in SPH)`);
 //! * no SPH run: design = A (source `analytic`).
@@ -46,12 +52,18 @@ pub struct SphQuantity<'a> {
     pub verdict: Option<&'a str>,
     /// Whether the SPH water reached the sensor with a slamming pressure.
     pub wetted: bool,
+    /// Where the convergence levels' peaks are different events (verdict `mismatched`): the difference
+    /// between the reported peak and the next level's, as a fraction of the reported one, which stands
+    /// in for the GCI (`None` when that level has no slamming peak).
+    pub spread: Option<f64>,
 }
 
 /// A design value and where it comes from.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Decision {
-    pub value: f64,
+    /// `None` where no model here computes the load (a flat-keel impact: SPH without air and the
+    /// analytic models both leave it out); `source` then says why.
+    pub value: Option<f64>,
     pub source: &'static str,
     /// The SPH discretisation uncertainty U = GCI P, where there is one.
     pub uncertainty: Option<f64>,
@@ -74,11 +86,35 @@ fn analytic_label(status: Option<ImpactStatus>) -> &'static str {
     }
 }
 
-/// The design value from the SPH quantity `q` (none without an SPH run) and the analytic estimate `a`.
+/// The source of a panel without a design value: SPH does not compute its impact (`status`) and the
+/// analytic models give no peak there.
+pub const NO_VALUE_FLAT_KEEL: &str =
+    "none (flat keel: air-cushion impact, not computed without air)";
+
+/// The source of a design value that no model gives: SPH does not resolve the impact (`status`) and
+/// the analytic models have no peak for the panel.
+fn none_label(status: Option<ImpactStatus>) -> &'static str {
+    match status {
+        Some(ImpactStatus::Acoustic) => NO_VALUE_FLAT_KEEL,
+        Some(ImpactStatus::InTransient) => {
+            "none (SPH: impact in the contact transient; no analytic peak on a panel wetted at contact)"
+        }
+        _ => "none (no SPH impact and no analytic peak)",
+    }
+}
+
+/// The source of a panel without an SPH run whose analytic values are only the decay of a singular
+/// start (wetted at once on a flat keel or below an immersed start's waterline).
+pub const NO_VALUE_WETTED_AT_START: &str =
+    "none (wetted at contact: no analytic peak, and no SPH run in this event)";
+
+/// The design value from the SPH quantity `q` (none without an SPH run) and the analytic estimate `a`
+/// (none where the models give no peak: a panel wetted at once on a flat keel, or at an immersed
+/// start). `None` when neither SPH nor the analytic estimate has the quantity.
 pub fn decide(q: Option<SphQuantity>, a: Option<f64>) -> Option<Decision> {
     let analytic = |source| {
         a.map(|v| Decision {
-            value: v,
+            value: Some(v),
             source,
             uncertainty: None,
         })
@@ -91,25 +127,31 @@ pub fn decide(q: Option<SphQuantity>, a: Option<f64>) -> Option<Decision> {
     }
     let p = match (q.status, q.slamming) {
         (Some(ImpactStatus::Resolved), Some(p)) | (None, Some(p)) => p,
-        (status, _) => return analytic(analytic_label(status)),
+        (status, _) => {
+            return analytic(analytic_label(status)).or(Some(Decision {
+                value: None,
+                source: none_label(status),
+                uncertainty: None,
+            }));
+        }
     };
-    let u = q.gci.map(|g| g * p.abs());
+    let u = q.gci.or(q.spread).map(|g| g * p.abs());
     let upper = p + u.unwrap_or(0.0);
     if shown_converged(q.verdict) {
         return Some(Decision {
-            value: upper,
+            value: Some(upper),
             source: "sph (converged)",
             uncertainty: u,
         });
     }
     match a {
         Some(av) if av > upper => Some(Decision {
-            value: av,
+            value: Some(av),
             source: "analytic (SPH not converged)",
             uncertainty: u,
         }),
         _ => Some(Decision {
-            value: upper,
+            value: Some(upper),
             source: "sph (not converged)",
             uncertainty: u,
         }),
@@ -127,6 +169,7 @@ mod tests {
             gci,
             verdict: Some(verdict),
             wetted: true,
+            spread: None,
         }
     }
 
@@ -134,21 +177,37 @@ mod tests {
     fn unconverged_sph_never_lowers_the_design_below_analytic() {
         // S093-4 of the committed Ochi report: SPH 1.79 kPa, analytic 3.58 kPa, not converged
         let d = decide(Some(q(1790.0, Some(0.4), "not_converged")), Some(3580.0)).unwrap();
-        assert_eq!(d.value, 3580.0);
+        assert_eq!(d.value, Some(3580.0));
         assert_eq!(d.source, "analytic (SPH not converged)");
         // a mismatched companion is not converged either
         let d = decide(Some(q(970.0, None, "mismatched")), Some(2860.0)).unwrap();
-        assert_eq!(d.value, 2860.0);
+        assert_eq!(d.value, Some(2860.0));
         // an unconverged SPH peak above analytic keeps its uncertainty
         let d = decide(Some(q(5000.0, Some(0.3), "not_converged")), Some(3000.0)).unwrap();
-        assert!((d.value - 6500.0).abs() < 1e-9);
+        assert!((d.value.unwrap() - 6500.0).abs() < 1e-9);
         assert_eq!(d.source, "sph (not converged)");
+    }
+
+    #[test]
+    fn a_mismatched_peak_carries_the_spread_of_its_levels() {
+        // S093-2 of the committed Ochi report (bceb623): 2.78 kPa at the keel stage, 3.92 kPa at its companion,
+        // another event; the design value is at least the larger of the two
+        let mut m = q(2778.0, None, "mismatched");
+        m.spread = Some((3921.6 - 2778.0) / 2778.0);
+        let d = decide(Some(m), Some(2250.0)).unwrap();
+        assert!((d.value.unwrap() - 3921.6).abs() < 1e-6, "{d:?}");
+        assert!((d.uncertainty.unwrap() - 1143.6).abs() < 1e-6);
+        assert_eq!(d.source, "sph (not converged)");
+        // without a companion peak there is no spread, and the rule is max(P, A)
+        let d = decide(Some(q(2190.0, None, "mismatched")), Some(2620.0)).unwrap();
+        assert_eq!(d.value, Some(2620.0));
+        assert!(d.uncertainty.is_none());
     }
 
     #[test]
     fn converged_sph_carries_its_band() {
         let d = decide(Some(q(2000.0, Some(0.04), "converged")), Some(3000.0)).unwrap();
-        assert!((d.value - 2080.0).abs() < 1e-9);
+        assert!((d.value.unwrap() - 2080.0).abs() < 1e-9);
         assert_eq!(d.source, "sph (converged)");
         assert!((d.uncertainty.unwrap() - 80.0).abs() < 1e-9);
     }
@@ -166,13 +225,26 @@ mod tests {
                     gci: None,
                     verdict: None,
                     wetted: true,
+                    spread: None,
                 }),
                 Some(4000.0),
             )
             .unwrap();
-            assert_eq!(d.value, 4000.0);
+            assert_eq!(d.value, Some(4000.0));
             assert!(d.source.contains(label), "{}", d.source);
         }
+        // a flat keel with no analytic peak either: no design value, and the source says why
+        let flat = SphQuantity {
+            status: Some(ImpactStatus::Acoustic),
+            slamming: None,
+            gci: None,
+            verdict: None,
+            wetted: true,
+            spread: None,
+        };
+        let d = decide(Some(flat), None).unwrap();
+        assert_eq!(d.value, None);
+        assert_eq!(d.source, NO_VALUE_FLAT_KEEL);
         assert_eq!(decide(None, Some(1.0)).unwrap().source, "analytic");
     }
 }

@@ -34,6 +34,20 @@ fn convergence_of<'a>(
         .find(|p| p.name == name)
 }
 
+/// For a peak whose convergence levels show different events (verdict `mismatched`): |P_2 - P| / |P|,
+/// with P the reported peak and P_2 the next level's ([`crate::assess::design_rule`]); `None` otherwise
+/// or when either has no peak.
+fn mismatch_spread(s: &RunSummary, name: &str) -> Option<f64> {
+    let p = convergence_of(s, name)?;
+    if p.verdict != crate::loads::convergence::Verdict::Mismatched {
+        return None;
+    }
+    match p.values.as_slice() {
+        [v, v2, ..] if *v > 0.0 && *v2 > 0.0 => Some((v2 - v).abs() / v),
+        _ => None,
+    }
+}
+
 /// The verdict and statement of the peak called `name` in a run's convergence report.
 fn verdict(s: &RunSummary, name: &str) -> (Option<String>, Option<String>) {
     match convergence_of(s, name) {
@@ -76,6 +90,7 @@ fn record(key: &str, s: &RunSummary) -> SphRecord {
         force_slamming_time_s: fa.and_then(|a| a.slamming_peak.map(|p| p.time)),
         force_hydrostatic_n_per_m: fa.and_then(|a| a.hydrostatic_at_peak),
         force_gci: gci("section force raw"),
+        force_spread: mismatch_spread(s, "section force raw"),
         force_convergence_statement: force_statement,
         sensors: s
             .sensors
@@ -88,11 +103,16 @@ fn record(key: &str, s: &RunSummary) -> SphRecord {
                 // wetted: the slamming peak (or, without an anatomy, the largest value) reaches a
                 // slamming pressure
                 let reached = slam.map_or(q.summary.raw.value, |p| p.value);
+                // A keel stage's record covers the early entry only: the main run's later load, when
+                // larger, is the largest value the panel carries.
+                let later = q
+                    .main_run_later_load
+                    .filter(|l| l.value > q.summary.raw.value);
                 SphSensor {
                     name: q.name.clone(),
-                    raw_peak_pa: q.summary.raw.value,
+                    raw_peak_pa: later.map_or(q.summary.raw.value, |l| l.value),
                     filtered_peak_pa: q.summary.filtered.map(|f| f.value),
-                    peak_time_s: q.summary.raw.time,
+                    peak_time_s: later.map_or(q.summary.raw.time, |l| l.time_s),
                     impulse_pa_s: q.summary.raw.impulse,
                     convergence: c,
                     convergence_statement: st,
@@ -106,9 +126,16 @@ fn record(key: &str, s: &RunSummary) -> SphRecord {
                     slamming_impulse_pa_s: slam.map(|p| p.impulse),
                     rise_time_s: a.and_then(|a| a.rise_time_s),
                     hydrostatic_pa: a.and_then(|a| a.hydrostatic_at_peak),
-                    largest_phase: a.map(|a| a.largest_phase),
-                    largest_hydrostatic_pa: a.and_then(|a| a.hydrostatic_at_largest),
+                    largest_phase: match later {
+                        Some(_) => Some(crate::loads::anatomy::Phase::Immersion),
+                        None => a.map(|a| a.largest_phase),
+                    },
+                    largest_hydrostatic_pa: match later {
+                        Some(l) => l.hydrostatic,
+                        None => a.and_then(|a| a.hydrostatic_at_largest),
+                    },
                     gci: gci(&name),
+                    spread: mismatch_spread(s, &name),
                     particles_across_wetted: a.and_then(|a| {
                         a.crossing_half_width_m
                             .map(|c| c / q.stage.map_or(s.dp_m, |r| r.dp_m))
@@ -563,8 +590,10 @@ pub fn run(
             .collect::<Vec<_>>(),
         "design_value": "per sensor and station, the largest design value over the events with an SPH run at \
                          that station (all events where none has one); per event: SPH slamming peak + its GCI \
-                         uncertainty where converged, else the larger of that and the analytic (MLM) peak, \
-                         or the analytic peak where SPH does not resolve the impact (src/assess/design_rule.rs)",
+                         uncertainty where converged, else the larger of that and the analytic (MLM) peak \
+                         (where the levels' peaks are different events, U is the difference between them), \
+                         or the analytic peak where SPH does not resolve the impact, and no value where \
+                         neither computes it (a flat keel's air-cushion impact) (src/assess/design_rule.rs)",
     });
     let mut inputs = hull.input_files();
     inputs.push(sea.source.as_path());

@@ -173,12 +173,13 @@ pub fn check(a: &Assessment, limits: &[Limit]) -> Vec<String> {
                     Scope::Station(f) => (f - st.station).abs() < 1e-6,
                     Scope::Sensor(n) => n == &d.name,
                 };
-                if applies && d.value > l.pressure_pa {
+                let Some(v) = d.value else { continue };
+                if applies && v > l.pressure_pa {
                     out.push(format!(
                         "LIMIT EXCEEDED: station {} sensor {} {:.2} kPa > {:.2} kPa ({}, {} m/s, {}; limit from {})",
                         st.station,
                         d.name,
-                        d.value / 1e3,
+                        v / 1e3,
                         l.pressure_pa / 1e3,
                         d.source,
                         d.speed_m_per_s,

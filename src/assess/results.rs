@@ -19,6 +19,9 @@ use crate::report::sanity::SlamFlag;
 #[derive(Debug, Clone, Serialize, Deserialize, PartialEq)]
 pub struct SphSensor {
     pub name: String,
+    /// The largest raw value the panel carries in the run, and its time (`peak_time_s`): for a sensor a
+    /// keel stage resolved, the stage's, or the main run's later load where that is larger (the stage
+    /// covers only the early entry; [`crate::sph::keel_stage::LaterLoad`]).
     pub raw_peak_pa: f64,
     pub filtered_peak_pa: Option<f64>,
     pub peak_time_s: f64,
@@ -61,6 +64,9 @@ pub struct SphSensor {
     /// GCI of the slamming peak (fraction), from the matched levels.
     #[serde(default)]
     pub gci: Option<f64>,
+    /// Where the levels' peaks are different events: |P_2 - P| / |P| ([`super::design_rule`]).
+    #[serde(default)]
+    pub spread: Option<f64>,
     /// Particles across the analytic wetted half-width when the contact crosses the sensor (at the
     /// spacing of the run whose record the sensor has: the keel stage's when one resolved it).
     #[serde(default)]
@@ -73,10 +79,12 @@ pub struct SphSensor {
 
 impl SphSensor {
     /// The largest SPH value when it lies in the immersion phase (after the impact window) and exceeds
-    /// `design`: a load the panel carries that is not its slamming pressure.
-    pub fn later_load(&self, design: f64) -> Option<f64> {
-        (self.largest_phase == Some(Phase::Immersion) && self.raw_peak_pa > design)
-            .then_some(self.raw_peak_pa)
+    /// `design` (any, where there is no design value): a load the panel carries that is not its
+    /// slamming pressure.
+    pub fn later_load(&self, design: Option<f64>) -> Option<f64> {
+        (self.largest_phase == Some(Phase::Immersion)
+            && design.is_none_or(|d| self.raw_peak_pa > d))
+        .then_some(self.raw_peak_pa)
     }
 
     /// What the design rule needs of this sensor.
@@ -91,6 +99,7 @@ impl SphSensor {
             gci: self.gci,
             verdict: self.convergence.as_deref(),
             wetted: self.wetted,
+            spread: self.spread,
         }
     }
 }
@@ -118,7 +127,7 @@ pub fn sensor_warnings(r: &SphRecord, analytic: Option<&Estimate>) -> Vec<String
     let mlm = |name: &str| {
         analytic
             .and_then(|a| a.sensors.iter().find(|s| s.name == name))
-            .map(|s| s.peak_pa)
+            .and_then(|s| s.peak())
     };
     for q in &r.sensors {
         if !q.wetted {
@@ -165,8 +174,10 @@ pub fn sensor_warnings(r: &SphRecord, analytic: Option<&Estimate>) -> Vec<String
         out.push(format!(
             "sensors {}: the contact crosses them at an acoustic speed (flat or nearly flat keel): the impact \
              is a water-hammer pressure that single-phase SPH with an artificial sound speed does not \
-             compute, and air cushions it in reality; their design values are the analytic estimates, with \
-             the water-hammer pressure rho c_w V as the upper bound",
+             compute, and air cushions it in reality; the analytic models give no peak there either (their \
+             pressure only falls from the flat keel's singular start), so these panels have no design \
+             value from this tool: the water-hammer pressure rho c_w V is the upper bound of an impact \
+             without air, and the cushioned impact needs a two-phase model",
             acoustic.join(", ")
         ));
     }
@@ -177,12 +188,12 @@ pub fn sensor_warnings(r: &SphRecord, analytic: Option<&Estimate>) -> Vec<String
             let design = decide(Some(q.quantity()), mlm(&q.name))?.value;
             let load = q.later_load(design)?;
             Some(format!(
-                "{} ({:.2} kPa at {:.3} s, of which {:.2} kPa hydrostatic; design {:.2} kPa)",
+                "{} ({:.2} kPa at {:.3} s, of which {:.2} kPa hydrostatic; design {})",
                 q.name,
                 load * 1e-3,
                 q.peak_time_s,
                 q.largest_hydrostatic_pa.unwrap_or(0.0) * 1e-3,
-                design * 1e-3
+                design.map_or("none".into(), |d| format!("{:.2} kPa", d * 1e-3))
             ))
         })
         .collect();
@@ -231,6 +242,9 @@ pub struct SphRecord {
     pub force_hydrostatic_n_per_m: Option<f64>,
     #[serde(default)]
     pub force_gci: Option<f64>,
+    /// Where the levels' force peaks are different events: |F_2 - F| / |F| ([`super::design_rule`]).
+    #[serde(default)]
+    pub force_spread: Option<f64>,
     #[serde(default)]
     pub force_convergence_statement: Option<String>,
     pub sensors: Vec<SphSensor>,
@@ -281,34 +295,46 @@ impl EventResult {
             gci: s.force_gci,
             verdict: s.force_convergence.as_deref(),
             wetted: true,
+            spread: s.force_spread,
         });
-        decide(q, self.analytic.as_ref().map(|a| a.force_peak_n_per_m))
+        decide(q, self.analytic.as_ref().and_then(|a| a.force_peak_n_per_m))
     }
 
     /// The section force peak used for design (N/m) and its source ([`super::design_rule`]).
     pub fn force_peak(&self) -> Option<(f64, &'static str)> {
-        self.force_design().map(|d| (d.value, d.source))
+        self.force_design()
+            .and_then(|d| d.value.map(|v| (v, d.source)))
     }
 
     /// A sensor's design decision ([`super::design_rule`]): none when neither SPH nor the analytic
     /// estimate has the sensor.
     pub fn sensor_design(&self, name: &str) -> Option<Decision> {
-        let analytic = self
+        let estimate = self
             .analytic
             .as_ref()
-            .and_then(|a| a.sensors.iter().find(|q| q.name == name).map(|q| q.peak_pa));
+            .and_then(|a| a.sensors.iter().find(|q| q.name == name));
+        let analytic = estimate.and_then(|q| q.peak());
         match &self.sph {
             Some(s) => {
                 let q = s.sensors.iter().find(|q| q.name == name)?;
                 decide(Some(q.quantity()), analytic)
             }
-            None => decide(None, analytic),
+            None => decide(None, analytic).or_else(|| {
+                estimate
+                    .filter(|q| q.no_peak_after_start)
+                    .map(|_| Decision {
+                        value: None,
+                        source: super::design_rule::NO_VALUE_WETTED_AT_START,
+                        uncertainty: None,
+                    })
+            }),
         }
     }
 
     /// A sensor's design value (Pa) for this event and its source ([`super::design_rule`]).
     pub fn sensor_peak(&self, name: &str) -> Option<(f64, &'static str)> {
-        self.sensor_design(name).map(|d| (d.value, d.source))
+        self.sensor_design(name)
+            .and_then(|d| d.value.map(|v| (v, d.source)))
     }
 }
 
@@ -316,7 +342,8 @@ impl EventResult {
 #[derive(Debug, Clone, Serialize)]
 pub struct DesignValue {
     pub name: String,
-    pub value: f64,
+    /// `None` where no model here computes the load ([`super::design_rule::NO_VALUE_FLAT_KEEL`]).
+    pub value: Option<f64>,
     /// "sph", "analytic", or "analytic (dry in SPH)" for a sensor the SPH run did not wet
     /// ([`SphSensor::wetted`]).
     pub source: &'static str,
@@ -379,9 +406,9 @@ impl DesignValue {
                 q.and_then(|q| q.convergence.clone())
             },
             analytic: if force {
-                e.analytic.as_ref().map(|a| a.force_peak_n_per_m)
+                e.analytic.as_ref().and_then(|a| a.force_peak_n_per_m)
             } else {
-                an.map(|a| a.peak_pa)
+                an.and_then(|a| a.peak())
             },
             hydrostatic: if force {
                 sph.and_then(|s| s.force_hydrostatic_n_per_m)
@@ -507,7 +534,9 @@ pub fn stations(events: &[EventResult], at: &[(f64, f64)]) -> Vec<StationResult>
                 let mut out: Option<DesignValue> = None;
                 for e in here {
                     if let Some(d) = get(e)
-                        && out.as_ref().is_none_or(|b| d.value > b.value)
+                        && out.as_ref().is_none_or(|b| {
+                            d.value.is_some_and(|v| b.value.is_none_or(|bv| v > bv))
+                        })
                     {
                         out = Some(DesignValue::of(name, e, d));
                     }
@@ -627,12 +656,12 @@ pub fn pressures_csv(a: &Assessment, sensors_of: &dyn Fn(f64) -> Vec<String>) ->
                 num(s.and_then(|q| q.hydrostatic_pa)),
                 num(s.and_then(|q| q.gci)),
                 num(s.and_then(|q| q.particles_across_wetted)),
-                num(an.map(|q| q.peak_pa)),
-                num(an.map(|q| q.peak_time_s)),
+                num(an.and_then(|q| q.peak())),
+                num(an.filter(|q| q.peak().is_some()).map(|q| q.peak_time_s)),
                 num(an.map(|q| q.impulse_pa_s)),
                 num(e.sph.as_ref().map(|r| r.force_peak_n_per_m)),
-                num(e.analytic.as_ref().map(|r| r.force_peak_n_per_m)),
-                num(design.map(|d| d.value)),
+                num(e.analytic.as_ref().and_then(|r| r.force_peak_n_per_m)),
+                num(design.and_then(|d| d.value)),
                 design.map_or(String::new(), |d| d.source.to_string()),
                 e.failed.clone().unwrap_or_default(),
                 e.design_event
@@ -751,6 +780,7 @@ mod tests {
             largest_phase: Some(Phase::Impact),
             largest_hydrostatic_pa: None,
             gci: None,
+            spread: None,
             particles_across_wetted: Some(12.0),
             stage_dp_m: None,
         }
@@ -758,8 +788,8 @@ mod tests {
 
     fn event() -> EventResult {
         let analytic = Estimate {
-            force_peak_n_per_m: 300.0,
-            force_peak_time_s: 0.03,
+            force_peak_n_per_m: Some(300.0),
+            force_peak_time_s: Some(0.03),
             sensors: ["K1", "K2", "K3"]
                 .iter()
                 .map(|n| SensorEstimate {
@@ -769,6 +799,7 @@ mod tests {
                     impulse_pa_s: 2.0,
                     acoustic_bound_pa: None,
                     uncorrected_peak_pa: None,
+                    no_peak_after_start: false,
                 })
                 .collect(),
             notes: Vec::new(),
@@ -786,6 +817,7 @@ mod tests {
             force_slamming_time_s: Some(0.05),
             force_hydrostatic_n_per_m: Some(5.0),
             force_gci: None,
+            force_spread: None,
             force_convergence_statement: None,
             sensors: vec![
                 sph_sensor("K1", 2780.0, true, false),

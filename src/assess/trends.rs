@@ -61,25 +61,43 @@ impl Found {
 pub struct KeelTrend {
     /// (station, sensor with the largest design pressure, its value in Pa, its source, keel sensor).
     pub rows: Vec<(f64, String, f64, &'static str, String)>,
+    /// Stations left out because their keel sensor has no design value (a flat keel's air-cushion
+    /// impact, [`crate::assess::design_rule::NO_VALUE_FLAT_KEEL`]): whether the keel carries the largest
+    /// pressure there cannot be told. (station, keel sensor, its design source.)
+    pub without_keel_value: Vec<(f64, String, &'static str)>,
 }
 
 impl KeelTrend {
     pub fn of(a: &Assessment) -> Self {
         let mut rows = Vec::new();
+        let mut without_keel_value = Vec::new();
         for st in &a.stations {
+            let keel_none = by_girth(st).first().and_then(|k| {
+                st.design_pressure_pa
+                    .iter()
+                    .find(|d| d.name == *k && d.value.is_none())
+            });
+            if let Some(d) = keel_none {
+                without_keel_value.push((st.station, d.name.clone(), d.source));
+                continue;
+            }
             let best = st
                 .design_pressure_pa
                 .iter()
-                .max_by(|p, q| p.value.total_cmp(&q.value));
+                .filter_map(|p| p.value.map(|v| (p, v)))
+                .max_by(|p, q| p.1.total_cmp(&q.1));
             let keel = by_girth(st).first().map(|k| k.to_string());
-            if let Some(b) = best
-                && b.value > 0.0
+            if let Some((b, v)) = best
+                && v > 0.0
             {
                 let keel = keel.unwrap_or_else(|| st.design_pressure_pa[0].name.clone());
-                rows.push((st.station, b.name.clone(), b.value, b.source, keel));
+                rows.push((st.station, b.name.clone(), v, b.source, keel));
             }
         }
-        KeelTrend { rows }
+        KeelTrend {
+            rows,
+            without_keel_value,
+        }
     }
 
     /// Stations whose largest design pressure is on the keel sensor, over the stations counted.
@@ -132,6 +150,9 @@ impl KeelTrend {
                     r.4
                 )
             })
+            .chain(self.without_keel_value.iter().map(|(st, k, src)| {
+                format!("station {st}: not counted, keel sensor {k} has no design value ({src})")
+            }))
             .collect::<Vec<_>>()
             .join("; ")
     }
@@ -496,15 +517,19 @@ mod tests {
             |f: f64, best: &str, keel: &str| (f, best.to_string(), 3e3, "sph", keel.to_string());
         let all = KeelTrend {
             rows: vec![row(0.093, "S1", "S1"), row(0.133, "T1", "T1")],
+            without_keel_value: Vec::new(),
         };
         assert_eq!(all.found(), Found::Reproduced);
         assert_eq!(all.off_keel(), "no station");
         let one_off = KeelTrend {
             rows: vec![row(0.093, "S2", "S1"), row(0.133, "T1", "T1")],
+            without_keel_value: vec![(0.174, "U1".into(), "none")],
         };
         assert_eq!(one_off.fraction(), Some(0.5));
         assert_eq!(one_off.found(), Found::NotReproduced);
         assert!(one_off.off_keel().starts_with("0.093 Lpp (S2 3.00 kPa"));
+        // a station whose keel sensor has no design value is not counted, and the detail says so
+        assert!(one_off.detail().contains("station 0.174: not counted"));
         assert_eq!(KeelTrend::default().found(), Found::NotAssessed);
     }
 

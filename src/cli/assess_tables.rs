@@ -58,8 +58,8 @@ pub fn tables(a: &Assessment) -> String {
         );
         if let Some(f) = &st.section_force_peak_n_per_m {
             s += &format!(
-                "; section force {:.1} N/m ({}, {} m/s)",
-                f.value,
+                "; section force {} N/m ({}, {} m/s)",
+                f.value.map_or("none".into(), |v| format!("{v:.1}")),
                 f.source,
                 speed_text(Some(f.speed_m_per_s))
             );
@@ -67,9 +67,9 @@ pub fn tables(a: &Assessment) -> String {
         s += "\n";
         for d in &st.design_pressure_pa {
             s += &format!(
-                "    {:<10} {:>9.2} kPa  ({}, {} m/s, {})\n",
+                "    {:<10} {:>9} kPa  ({}, {} m/s, {})\n",
                 d.name,
-                d.value / 1e3,
+                d.value.map_or("none".into(), |v| format!("{:.2}", v / 1e3)),
                 d.source,
                 speed_text(Some(d.speed_m_per_s)),
                 d.wave

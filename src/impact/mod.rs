@@ -134,11 +134,12 @@ pub fn air_cushion_warning(aft_of_fp: f64, points: &[[f64; 2]]) -> Option<String
     (flat > 0.0 && flat >= 0.05 * widest).then(|| {
         format!(
             "station {aft_of_fp} Lpp has a flat keel (half-width {flat:.4} m): its bottom impact is \
-             acoustic, which single-phase SPH with an artificial sound speed does not compute, so the design \
-             values of the panels on the flat are the analytic estimates with the water-hammer pressure \
-             rho c_w V as their upper bound; air trapped under the flat bottom cushions the real impact, \
-             which no model here represents, so these values are upper estimates (Veen 2010 s. 6.3: \
-             single-phase SPH read about twice Ochi's measured peaks at his flat section)"
+             acoustic, which single-phase SPH with an artificial sound speed does not compute, and the \
+             analytic models give no peak on the flat (their pressure only falls from the flat keel's \
+             singular start), so the panels on the flat have no design value from this tool; the \
+             water-hammer pressure rho c_w V is the upper bound of an impact without air, and air trapped \
+             under the flat bottom cushions the real impact, which needs a two-phase model (Veen 2010 s. \
+             6.3: single-phase SPH read about twice Ochi's measured peaks at his flat section)"
         )
     })
 }

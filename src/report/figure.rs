@@ -105,6 +105,9 @@ pub struct Figure {
     pub y_from_zero: bool,
     /// Width and height of the plot in pixels (legend rows are added below).
     pub size: (u32, u32),
+    /// Top of the y axis, below the data's largest value: lines above it run along the top of the frame
+    /// and markers above it are left out (the caption must say what is cut; the CSV keeps every point).
+    pub y_max: Option<f64>,
 }
 
 impl Figure {
@@ -118,6 +121,7 @@ impl Figure {
             ref_lines: Vec::new(),
             y_from_zero: false,
             size: (800, 420),
+            y_max: None,
         }
     }
 
@@ -173,6 +177,9 @@ impl Figure {
         }
         if self.y_from_zero {
             y0 = y0.min(0.0);
+        }
+        if let Some(m) = self.y_max.filter(|&m| m > y0) {
+            y1 = y1.min(m);
         }
         let pad = |a: f64, b: f64| {
             let span = if b > a { b - a } else { a.abs().max(1.0) * 0.1 };
@@ -247,13 +254,19 @@ impl Figure {
             }
             for s in &self.series {
                 let c = colour(s.colour);
-                let pts = s.points.iter().copied();
+                let top = if self.y_max.is_some() {
+                    y1
+                } else {
+                    f64::INFINITY
+                };
+                let pts = s.points.iter().copied().filter(|p| p.1 <= top);
                 let e = draw_error;
                 match s.mark {
                     Mark::Line | Mark::ThinLine | Mark::LineDots => {
                         let w = if s.mark == Mark::ThinLine { 1 } else { 2 };
+                        let clamped = s.points.iter().map(|&(x, y)| (x, y.min(top)));
                         chart
-                            .draw_series(LineSeries::new(pts.clone(), c.stroke_width(w)))
+                            .draw_series(LineSeries::new(clamped, c.stroke_width(w)))
                             .map_err(e)?;
                         if s.mark == Mark::LineDots {
                             chart

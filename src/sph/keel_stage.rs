@@ -123,6 +123,17 @@ pub struct StageRef {
     pub dp_m: f64,
 }
 
+/// The main run's largest value of a sensor a keel stage resolved, where it lies after the impact (the
+/// immersion phase, [`crate::loads::anatomy::Phase::Immersion`]): the stage runs only the early entry of
+/// the section's lower part, so the load the panel carries later is known from the main run alone.
+#[derive(Debug, Clone, Copy, Serialize, serde::Deserialize, PartialEq)]
+pub struct LaterLoad {
+    /// The value (Pa), its time (s) and its hydrostatic part (Pa) at that time.
+    pub value: f64,
+    pub time_s: f64,
+    pub hydrostatic: Option<f64>,
+}
+
 /// The starboard half of `section` cut at the first height where its half-breadth reaches `y`
 /// (the point there interpolated); the whole section when it never does.
 pub fn cut_at_half_breadth(section: &Section, y: f64) -> Result<Section> {
@@ -426,6 +437,13 @@ fn adopt(main: &mut RunSummary, stage: &RunSummary, index: usize) {
         adopted.stage = Some(StageRef {
             stage: index,
             dp_m: stage.dp_m,
+        });
+        adopted.main_run_later_load = m.anatomy.as_ref().and_then(|a| {
+            (a.largest_phase == crate::loads::anatomy::Phase::Immersion).then_some(LaterLoad {
+                value: a.largest.value,
+                time_s: a.largest.time,
+                hydrostatic: a.hydrostatic_at_largest,
+            })
         });
         *m = adopted;
         if let (Some(mc), Some(sc)) = (main.convergence.as_mut(), stage.convergence.as_ref()) {

@@ -93,6 +93,9 @@ pub struct NamedSummary {
     /// The keel stage whose record this is, when one resolved the sensor ([`keel_stage`]).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub stage: Option<keel_stage::StageRef>,
+    /// With `stage`: the main run's largest value where it lies after the impact.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub main_run_later_load: Option<keel_stage::LaterLoad>,
 }
 
 /// The result of a run, written as `summary.json` and printed by `--json`.
@@ -289,6 +292,7 @@ fn summarise_run(sim: &Simulation, wall_s: f64, stopped: Option<String>) -> Resu
         summary: summarise_after(&h.t, &h.fz, fc, t_tr)?,
         anatomy: phases.as_ref().map(|p| p.force()),
         stage: None,
+        main_run_later_load: None,
     };
     let mut sensors = Vec::new();
     let spans = sim.sensors().spans();
@@ -305,6 +309,7 @@ fn summarise_run(sim: &Simulation, wall_s: f64, stopped: Option<String>) -> Resu
                 .zip(span)
                 .map(|(p, span)| p.sensor(span, col)),
             stage: None,
+            main_run_later_load: None,
         });
     }
     let k_tr = h.t.partition_point(|&t| t < t_tr);

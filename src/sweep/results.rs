@@ -23,7 +23,8 @@ pub struct Param {
 #[derive(Debug, Clone, Serialize, Deserialize, PartialEq)]
 pub struct CaseSensor {
     pub name: String,
-    pub design_pressure_pa: f64,
+    /// `None` where no model computes it ([`crate::assess::design_rule::NO_VALUE_FLAT_KEEL`]).
+    pub design_pressure_pa: Option<f64>,
     pub source: String,
     pub speed_m_per_s: f64,
     pub wave: String,
@@ -114,7 +115,10 @@ pub fn stations(
                     .reduce(f64::max),
                 slam_probability: stats.get(k).copied().flatten().map(|s| s.0),
                 slams_per_hour: stats.get(k).copied().flatten().map(|s| s.1),
-                section_force_peak_n_per_m: s.section_force_peak_n_per_m.as_ref().map(|d| d.value),
+                section_force_peak_n_per_m: s
+                    .section_force_peak_n_per_m
+                    .as_ref()
+                    .and_then(|d| d.value),
                 sensors: s
                     .design_pressure_pa
                     .iter()
@@ -136,7 +140,7 @@ pub fn summarise(c: &mut CaseResult) {
     c.max_design_pressure_pa = c
         .stations
         .iter()
-        .flat_map(|s| s.sensors.iter().map(|q| q.design_pressure_pa))
+        .flat_map(|s| s.sensors.iter().filter_map(|q| q.design_pressure_pa))
         .reduce(f64::max);
     c.max_section_force_n_per_m = c
         .stations
@@ -305,7 +309,7 @@ pub fn results_csv(r: &SweepResult) -> Result<String> {
                     csv_number(s.station),
                     csv_number(s.x_m),
                     q.name.clone(),
-                    csv_number(q.design_pressure_pa),
+                    q.design_pressure_pa.map_or(String::new(), csv_number),
                     q.source.clone(),
                     csv_number(q.speed_m_per_s),
                     q.wave.clone(),

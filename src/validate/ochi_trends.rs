@@ -96,12 +96,14 @@ pub fn keel_trend(case: &Case, memo: &Memo) -> Result<Outcome> {
             rows.push(vec![
                 format!("{}", st.station),
                 d.name.clone(),
-                format!("{:.3}", d.value / 1e3),
+                d.value.map_or("none".into(), |v| format!("{:.3}", v / 1e3)),
                 d.source.to_string(),
                 format!("{}", d.speed_m_per_s),
                 d.wave.clone(),
             ]);
-            pts.push([i as f64 + 1.0, d.value / 1e3]);
+            if let Some(v) = d.value {
+                pts.push([i as f64 + 1.0, v / 1e3]);
+            }
         }
         series.push(Series {
             label: format!("station {}", st.station),
@@ -143,6 +145,17 @@ pub fn keel_trend(case: &Case, memo: &Memo) -> Result<Outcome> {
         a.fidelity,
         t.found().label()
     ));
+    if !t.without_keel_value.is_empty() {
+        out.notes.push(format!(
+            "not counted: {} (the keel sensor has no design value, so whether it carries the largest \
+             pressure cannot be told)",
+            t.without_keel_value
+                .iter()
+                .map(|(st, k, src)| format!("station {st} ({k}: {src})"))
+                .collect::<Vec<_>>()
+                .join(", ")
+        ));
+    }
     out.fact("off_keel", t.off_keel());
     out.fact("stations", format!("{}", t.rows.len()));
     out.fact("keel_stations", format!("{keel}"));

@@ -276,11 +276,12 @@ pub fn hermundstad_assess(case: &Case, memo: &Memo) -> Result<Outcome> {
         ));
     }
     let name = case.text("sensor")?;
-    let Some(design) = a
+    let Some((design, design_pa)) = a
         .stations
         .iter()
         .flat_map(|s| s.design_pressure_pa.iter())
         .find(|d| d.name == name)
+        .and_then(|d| d.value.map(|v| (d, v)))
     else {
         let flags: Vec<String> = a
             .events
@@ -312,7 +313,7 @@ pub fn hermundstad_assess(case: &Case, memo: &Memo) -> Result<Outcome> {
             ],
         });
     };
-    let p = design.value / 1e3;
+    let p = design_pa / 1e3;
     Ok(Outcome {
         facts,
         computed: p,

@@ -469,9 +469,34 @@ pub fn hull(r: &mut Report, saved: &Saved) {
                 "CB / CP / CM / CWP".into(),
                 format!("{:.4} / {:.4} / {:.4} / {:.4}", h.cb, h.cp, h.cm, h.cwp),
             ),
+            ("KG".into(), format!("{:.4} m", l.kg)),
+            (
+                "LCG (from midship, +fwd)".into(),
+                match l.lcg {
+                    Some(x) => format!("{x:.4} m"),
+                    None => format!("{:.4} m (not given: LCG = LCB)", h.lcb),
+                },
+            ),
+            (
+                "k_yy (pitch radius of gyration)".into(),
+                format!("{:.4} m ({:.3} Lpp)", l.k_yy, l.k_yy / h.lpp_m),
+            ),
         ];
         r.heading(2, &format!("Main particulars ({loading})"));
         r.push(Block::KeyValue(kv));
+    }
+    // What the hull file says of itself: where its offsets and mass properties come from, and what is
+    // assumed (the report's numbers rest on it).
+    if let Some(d) = hull
+        .description
+        .as_deref()
+        .map(str::trim)
+        .filter(|d| !d.is_empty())
+    {
+        r.heading(2, "Provenance of the hull (its file's description)");
+        for p in d.split("\n\n").map(str::trim).filter(|p| !p.is_empty()) {
+            r.para(p);
+        }
     }
     let rows: Vec<Vec<String>> = hull
         .sensors

@@ -97,6 +97,36 @@ fn mark_transient(fig: &mut Figure, t_tr: Option<f64>) -> String {
     }
 }
 
+/// Cut the y axis of `fig` (times in ms) when the contact transient before `t_tr` (s) rises more than
+/// twice as high as anything after it, so that the slamming peaks are not pressed onto the baseline;
+/// returns the caption's sentence (empty when nothing is cut). Call before the transient line is added.
+fn clip_transient(fig: &mut Figure, t_tr: Option<f64>, unit: &str) -> String {
+    let Some(t_ms) = t_tr.map(|t| t * 1e3) else {
+        return String::new();
+    };
+    // the slamming-peak dots count as after the transient wherever they lie (a keel stage's peak may
+    // come before the main run's transient ends)
+    let max_where = |after: bool| {
+        fig.series
+            .iter()
+            .flat_map(|s| s.points.iter().map(move |p| (p, s.mark == Mark::Dot)))
+            .filter(|(p, dot)| (*dot || p.0 > t_ms) == after)
+            .map(|(p, _)| p.1)
+            .fold(f64::NEG_INFINITY, f64::max)
+    };
+    let (before, after) = (max_where(false), max_where(true));
+    if !(after > 0.0 && before > 2.0 * after) {
+        return String::new();
+    }
+    let top = 1.25 * after;
+    fig.y_max = Some(top);
+    format!(
+        " The contact-transient spike (up to {before:.1} {unit}) runs off the top of the plot, which is cut \
+         at {top:.1} {unit} so that the slamming peaks can be read; the CSV beside the figure has every \
+         value."
+    )
+}
+
 fn series_of(run: &Run, col: &str, scale: f64) -> Vec<(f64, f64)> {
     match (run.column("time_s"), run.column(col)) {
         (Some(t), Some(x)) => t
@@ -309,7 +339,16 @@ pub fn section(r: &mut Report, saved: &Saved) {
             )
         };
         let t_tr = run.summary["contact_transient_end_s"].as_f64();
-        let transient = mark_transient(&mut fig, t_tr);
+        let cut = clip_transient(&mut fig, t_tr, "kPa");
+        let mut transient = mark_transient(&mut fig, t_tr);
+        transient.push_str(&cut);
+        if !staged.is_empty() && !transient.is_empty() {
+            transient.push_str(
+                " That line is the main run's: a record from a keel stage has the stage's own contact \
+                 transient, shorter by the ratio of the spacings, so its slamming peak may lie before the \
+                 line.",
+            );
+        }
         fig.size = (800, 400);
         let rule = setup
             .get("notes")
@@ -347,7 +386,8 @@ pub fn section(r: &mut Report, saved: &Saved) {
             0,
             Mark::Line,
         ));
-        let transient = mark_transient(&mut fig, t_tr);
+        let cut = clip_transient(&mut fig, t_tr, "kN/m");
+        let transient = mark_transient(&mut fig, t_tr) + &cut;
         fig.size = (800, 300);
         r.figure(
             fig,

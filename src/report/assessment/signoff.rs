@@ -45,6 +45,14 @@ fn flags_of_source(d: &Value) -> Vec<String> {
         return f;
     }
     match d["impact"].as_str() {
+        Some("acoustic") if d["value"].is_null() => f.push(format!(
+            "flat keel: air-cushion impact, which neither single-phase SPH nor the analytic models \
+             compute: no design value{}",
+            num(d, "acoustic_bound").map_or(String::new(), |b| format!(
+                " (upper bound without air, the water hammer rho c_w V: {:.0} kPa)",
+                b / 1e3
+            ))
+        )),
         Some("acoustic") => f.push("flat keel: acoustic impact, air cushion not modelled".into()),
         Some("in_transient") => f.push("impact not resolved by SPH at this spacing".into()),
         Some("not_crossed") | Some("after_record") => f.push("no SPH impact in the run".into()),
@@ -71,9 +79,16 @@ pub fn page(r: &mut Report, saved: &Saved) {
     r.para(&format!(
         "Design rule: {}. The SPH value is the slamming peak of the sensor's impact window (the analytic \
          wetted contact crossing the sensor), never a value of the contact transient, of the immersion \
-         that follows or of the end of a run; U is its discretisation uncertainty (GCI of the matched \
-         peaks at the convergence levels). Pressures are totals; the hydrostatic part at the time of the \
-         SPH peak is given apart, as class rules treat them apart. Density {} kg/m3.",
+         that follows or of the end of a run; U is its discretisation uncertainty: the GCI of the matched \
+         peaks at the convergence levels (SPH = smoothed-particle hydrodynamics; GCI = Roache's grid \
+         convergence index, from two levels with the order 1 assumed unless three give it), or, where the \
+         levels' peaks are different events, the difference between them. Verdicts: converged (GCI at \
+         most 5 %), acceptable (at most 20 %), not converged (above 20 %: refine before relying on the \
+         SPH value), mismatched (the coarser level's peak is another event), not assessed (one level, \
+         or no SPH impact). A panel with no design value (\"-\") is one no model here computes. \
+         Analytic: the modified Logvinovich model (MLM) for pressures, generalised Wagner for forces. \
+         Pressures are totals; the hydrostatic part at the time of the SPH peak is given apart, as class \
+         rules treat them apart. Density {} kg/m3.",
         text(&s["settings"], "design_value"),
         fmt(num(&s["settings"], "water_density_kg_m3"), 1.0, 1)
     ));
@@ -134,10 +149,12 @@ pub fn page(r: &mut Report, saved: &Saved) {
     });
     r.push(Block::Table {
         caption: "The governing impact of each panel: SPH impact status, slamming peak time, rise time, \
-                  impulse over the impact window, particles across the analytic wetted half-width when \
+                  impulse over the impact window (the sph_impulse_pa_s column of pressures.csv is over the \
+                  whole record), particles across the analytic wetted half-width when \
                   the contact crosses the panel (at the spacing of the keel stage that resolved it, where one did: \
                   a fine run of the section's lower part, see the SPH notes), and the water-hammer bound rho c_w V of a flat keel \
-                  (an upper bound without air)"
+                  (an upper bound without air; averaged over the panel, so a panel reaching beyond the flat \
+                  reads less than rho c_w V)"
             .into(),
         header: [
             "panel",
@@ -205,9 +222,10 @@ pub fn page(r: &mut Report, saved: &Saved) {
         });
     match top {
         Some(b) => r.para(&format!(
-            "Total bow slamming force, largest over the events: {:.1} N (upper bound, sum of the stations' \
-             design section forces) at {} m/s in {}, point of action {:.3} m from midship; at one instant \
-             {} N. Verdict: {}.",
+            "Total bow slamming force, largest over the events: {:.1} N (upper bound: the sum over the \
+             stations of each one's section force peak in that event, SPH where it ran in that event and \
+             generalised Wagner elsewhere, so not the sum of the table above) at {} m/s in {}, point of \
+             action {:.3} m from midship; at one instant {} N. Verdict: {}.",
             num(b, "peak_sum_total_n").unwrap_or(f64::NAN),
             speed_text(num(b, "speed_m_per_s")),
             text(b, "wave"),
@@ -227,7 +245,8 @@ pub fn page(r: &mut Report, saved: &Saved) {
     );
     items.push(
         "Single-phase SPH: no air. At flat and low-deadrise panels the impact is cushioned by air in \
-         reality; their design values here are the analytic estimates, with the water-hammer bound."
+         reality. Panels on a flat keel have no design value here (neither SPH nor the analytic models \
+         compute that impact); the water-hammer pressure is stated as the bound without air."
             .into(),
     );
     r.push(Block::List(items));

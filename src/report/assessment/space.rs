@@ -26,6 +26,8 @@ fn sensor_value(e: &Value, part: &str, name: &str, key: &str) -> Option<f64> {
     list(&e[part], "sensors")
         .iter()
         .find(|q| text(q, "name") == name)
+        // an analytic panel wetted at once by a singular start has no peak (`peak_pa` 0)
+        .filter(|q| !(key == "peak_pa" && q["no_peak_after_start"].as_bool() == Some(true)))
         .and_then(|q| num(q, key))
 }
 
