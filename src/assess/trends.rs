@@ -72,10 +72,11 @@ impl KeelTrend {
         let mut rows = Vec::new();
         let mut without_keel_value = Vec::new();
         for st in &a.stations {
-            let keel_none = by_girth(st).first().and_then(|k| {
+            let keel = by_girth(st).first().map(|k| k.to_string());
+            let keel_none = keel.as_ref().and_then(|k| {
                 st.design_pressure_pa
                     .iter()
-                    .find(|d| d.name == *k && d.value.is_none())
+                    .find(|d| &d.name == k && d.value.is_none())
             });
             if let Some(d) = keel_none {
                 without_keel_value.push((st.station, d.name.clone(), d.source));
@@ -86,7 +87,6 @@ impl KeelTrend {
                 .iter()
                 .filter_map(|p| p.value.map(|v| (p, v)))
                 .max_by(|p, q| p.1.total_cmp(&q.1));
-            let keel = by_girth(st).first().map(|k| k.to_string());
             if let Some((b, v)) = best
                 && v > 0.0
             {

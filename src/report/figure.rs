@@ -252,13 +252,14 @@ impl Figure {
                     ))
                     .map_err(draw_error)?;
             }
+            // with a cut axis, lines run along the top of the frame and markers above it are left out
+            let top = if self.y_max.is_some() {
+                y1
+            } else {
+                f64::INFINITY
+            };
             for s in &self.series {
                 let c = colour(s.colour);
-                let top = if self.y_max.is_some() {
-                    y1
-                } else {
-                    f64::INFINITY
-                };
                 let pts = s.points.iter().copied().filter(|p| p.1 <= top);
                 let e = draw_error;
                 match s.mark {
