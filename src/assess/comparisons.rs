@@ -37,6 +37,9 @@ pub struct TrendCheck {
     /// The numbers the verdict rests on.
     pub detail: String,
     pub source: String,
+    /// Where the finding is not reproduced: what in this assessment explains it, as far as the tool can
+    /// tell (the same reading as the known-failure text of the matching `slamtool validate` case).
+    pub reading: Option<String>,
 }
 
 /// The comparisons and trend checks of an assessment (empty for a hull without reference data).

@@ -285,6 +285,20 @@ impl SpeedTrend {
         )
     }
 
+    /// Why the track may not show Ochi's trend: how many of its maxima are analytic and how many SPH
+    /// peaks, and what the analytic estimates alone show.
+    pub fn reading(&self, a: &Assessment) -> String {
+        let sph = self.track.iter().filter(|t| t.3.starts_with("sph")).count();
+        format!(
+            "The maxima of this track come from two models: {sph} of {} speeds' from an SPH run, the others \
+             from the analytic estimate (SPH runs only where the screening asks for one). Where the two \
+             differ, the station of the largest value follows the source rather than the speed. With the \
+             analytic estimates alone at every event, {}.",
+            self.track.len(),
+            Self::of_analytic(a).finding()
+        )
+    }
+
     pub fn detail(&self) -> String {
         self.track
             .iter()
@@ -387,6 +401,15 @@ impl ForeTrend {
     }
 }
 
+/// Why a keel sensor may not carry a station's largest pressure in the linear 2D+t chain (the reading of
+/// the keel and fore trends when they are not reproduced).
+const KEEL_ENTRY_READING: &str = "In the linear 2D+t chain the keel enters the water where the relative \
+     motion falls through the local draft, while the relative velocity is still rising (it is largest where \
+     the relative motion passes zero), so the water reaches the upper sensors faster than the keel. A keel \
+     maximum at impact, as Ochi measured, needs the keel to re-enter near the largest relative velocity, \
+     i.e. a relative motion well beyond the draft. Stations whose keel sensor has no design value are not \
+     counted.";
+
 /// The trend checks and comparisons of an Ochi V-form assessment.
 pub fn ochi(a: &Assessment) -> Result<Validation> {
     let mut out = Validation::default();
@@ -397,12 +420,14 @@ pub fn ochi(a: &Assessment) -> Result<Validation> {
             .into(),
     );
     let keel = KeelTrend::of(a);
+    let keel_found = keel.found();
     out.trend_checks.push(TrendCheck {
         check: "the maximum pressure is at the keel sensor of each station (design pressures)"
             .into(),
-        verdict: keel.found().label(),
+        verdict: keel_found.label(),
         detail: keel.detail(),
         source: SOURCE.into(),
+        reading: (keel_found == Found::NotReproduced).then(|| KEEL_ENTRY_READING.to_string()),
     });
     let speed = SpeedTrend::of(a);
     let least = speed.least_shift();
@@ -419,6 +444,7 @@ pub fn ochi(a: &Assessment) -> Result<Validation> {
         verdict: speed.found().label(),
         detail: format!("{}: {}", speed.finding(), speed.detail()),
         source: SOURCE.into(),
+        reading: (speed.found() == Found::NotReproduced).then(|| speed.reading(a)),
     });
     let fore = ForeTrend::of(a);
     out.trend_checks.push(TrendCheck {
@@ -429,6 +455,11 @@ pub fn ochi(a: &Assessment) -> Result<Validation> {
         verdict: fore.found().label(),
         detail: fore.detail(),
         source: SOURCE.into(),
+        reading: (fore.found() == Found::NotReproduced).then(|| {
+            format!(
+                "Not diagnosed separately; likely the keel trend's cause. {KEEL_ENTRY_READING}"
+            )
+        }),
     });
     // (d) Veen's P2 keel pressure and entry speeds at 2.0 m/s
     let num = |k: &str| reference_number(OCHI, "veen2010_sph", k);

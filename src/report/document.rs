@@ -109,6 +109,7 @@ const PREAMBLE: &str = r#"#set document(date: none)
 #set table(stroke: (x, y) => if y == 0 { (bottom: 0.6pt) } else { none }, inset: (x: 4pt, y: 2.5pt))
 #set figure(gap: 0.6em)
 #show figure: set block(breakable: true)
+#show figure.where(kind: image): set block(breakable: false)
 "#;
 
 impl Document {

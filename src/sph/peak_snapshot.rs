@@ -61,9 +61,23 @@ impl PeakSnapshot {
         let Some(pt) = &self.particles else {
             return Ok(false);
         };
-        let frame = frame_at(sim, self.z_keel, self.time_s);
+        let mut frame = frame_at(sim, self.z_keel, self.time_s);
+        frame.p_scale = colour_scale_top(self.pressure_pa, frame.p_scale);
         output::write_png(&dir.join(FILE), pt, &frame)?;
         Ok(true)
+    }
+}
+
+/// The top of the snapshot's colour scale: a round value (1, 2 or 5 times a power of ten) between the
+/// snapshot's sensor peak `p_peak` and 2.5 times it, so that the impact's pressure field spans the scale;
+/// `fallback` (the run's expected peak pressure) when the peak is not positive. Before, every snapshot used
+/// the expected peak the sound speed was chosen for, which on a hull section can be many times the
+/// computed peak and left the picture in the scale's lowest colours.
+fn colour_scale_top(p_peak: f64, fallback: f64) -> f64 {
+    if p_peak.is_finite() && p_peak > 0.0 {
+        super::frame::nice_length(2.5 * p_peak)
+    } else {
+        fallback
     }
 }
 
@@ -92,5 +106,20 @@ pub fn frame_at(sim: &Simulation, z_keel: f64, t: f64) -> Frame {
         mirror: s.mirror,
         time_s: t,
         outline,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::colour_scale_top;
+
+    #[test]
+    fn the_colour_scale_spans_the_snapshot_peak() {
+        for p in [3.06e3, 4.99e3, 1.0e4, 17.7e3, 2.0e5] {
+            let top = colour_scale_top(p, 1e6);
+            assert!(top > p && top <= 2.5 * p, "{p} -> {top}");
+        }
+        assert_eq!(colour_scale_top(0.0, 4e4), 4e4);
+        assert_eq!(colour_scale_top(f64::NAN, 4e4), 4e4);
     }
 }

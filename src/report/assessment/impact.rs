@@ -402,7 +402,8 @@ pub fn section(r: &mut Report, saved: &Saved) {
                     png: png.clone(),
                     caption: format!(
                         "Particles coloured by pressure at the instant of the highest sensor pressure \
-                         after the contact transient [figures/{name}]"
+                         after the contact transient; the colour scale runs from zero to a round value \
+                         above that sensor pressure (higher pressures take its top colour) [figures/{name}]"
                     ),
                     width_mm: 140.0,
                 });

@@ -57,12 +57,39 @@ fn unwrap_degrees(pts: &mut [(f64, f64)]) {
 
 /// Relative-motion (or velocity) amplitude against speed at each station, for one regular wave.
 fn relative_figure(m: &Value, wave: &str, key: &str, what: &str, unit: &str) -> Figure {
-    let mut f = Figure::new(
+    let f = Figure::new(
         &format!("relative_{}_{}", what.replace(' ', "_"), slug(wave)),
         &format!("Relative {what} amplitude at the stations, wave {wave}"),
         "speed U (m/s)",
         &format!("relative {what} amplitude ({unit})"),
     );
+    station_figure(m, wave, f, |st| num(st, key))
+}
+
+/// The downward relative velocity at which each station's keel re-enters the water in a regular wave,
+/// against speed: the velocity Ochi's criterion compares with the threshold (stations whose keel stays in
+/// the water have no point at that speed).
+fn reentry_figure(m: &Value, wave: &str) -> Figure {
+    let f = Figure::new(
+        &format!("keel_reentry_velocity_{}", slug(wave)),
+        &format!("Keel re-entry velocity at the stations, wave {wave}"),
+        "speed U (m/s)",
+        "keel re-entry velocity (m/s)",
+    );
+    station_figure(m, wave, f, |st| {
+        st.get("keel_entry")
+            .and_then(|k| num(k, "entry_velocity_m_per_s"))
+    })
+}
+
+/// One series per station of `value` against speed, in wave `wave`; a station without a value at a
+/// speed has no point there.
+fn station_figure(
+    m: &Value,
+    wave: &str,
+    mut f: Figure,
+    value: impl Fn(&Value) -> Option<f64>,
+) -> Figure {
     let mut stations: Vec<f64> = Vec::new();
     for sp in list(m, "speeds") {
         for r in list(sp, "regular")
@@ -88,10 +115,9 @@ fn relative_figure(m: &Value, wave: &str, key: &str, what: &str, unit: &str) -> 
                     .iter()
                     .filter(|st| num(st, "station").is_some_and(|x| (x - s).abs() < 1e-9))
                 {
-                    pts.push((
-                        num(sp, "speed_m_per_s").unwrap_or(f64::NAN),
-                        num(st, key).unwrap_or(f64::NAN),
-                    ));
+                    if let (Some(u), Some(v)) = (num(sp, "speed_m_per_s"), value(st)) {
+                        pts.push((u, v));
+                    }
                 }
             }
         }
@@ -225,13 +251,19 @@ pub fn section(r: &mut Report, saved: &Saved) {
             &format!("Relative vertical motion amplitude, wave {w}"),
             150.0,
         );
-        let mut f = relative_figure(
+        let f = relative_figure(
             m,
             w,
             "relative_velocity_amplitude_m_per_s",
             "velocity",
             "m/s",
         );
+        r.figure(
+            f,
+            &format!("Relative vertical velocity amplitude, wave {w}"),
+            150.0,
+        );
+        let mut f = reentry_figure(m, w);
         if let Some(t) = threshold {
             f.ref_lines.push(RefLine {
                 y: t,
@@ -241,8 +273,11 @@ pub fn section(r: &mut Report, saved: &Saved) {
         r.figure(
             f,
             &format!(
-                "Relative vertical velocity amplitude, wave {w}; a keel that emerges slams when it \
-                 re-enters faster than Ochi's threshold (red line)"
+                "Keel re-entry velocity, wave {w}: the downward relative velocity when the keel re-enters \
+                 the water after emerging, which Ochi's criterion compares with the threshold velocity (red \
+                 line); a point above the line is a slam. A station whose keel stays in the water at a speed \
+                 has no point there. It is lower than the velocity amplitude of the figure before, because \
+                 the keel re-enters before the relative velocity reaches its largest value"
             ),
             150.0,
         );

@@ -238,6 +238,25 @@ pub fn comparison(r: &mut Report, saved: &Saved) {
                 .to_vec(),
             rows,
         });
+        let readings: Vec<String> = trends
+            .iter()
+            .filter_map(|c| {
+                c["reading"]
+                    .as_str()
+                    .map(|why| format!("{}: {why}", sentence_start(&show(c, "check"))))
+            })
+            .collect();
+        if !readings.is_empty() {
+            r.para(
+                "Why the trends marked 'not reproduced' are not, as far as this assessment can tell (the \
+                 same reading as the known-failure texts of the matching `slamtool validate` cases). A \
+                 trend that is not reproduced does not by itself make a design value wrong: it says the \
+                 computed distribution of pressure over the stations, sensors or speeds is not the one \
+                 Ochi measured, so the design values of the affected sensors rest on the chain's relative \
+                 motion and on the model named in their source, not on agreement with the experiment.",
+            );
+            r.push(Block::List(readings));
+        }
     }
     let notes: Vec<String> = list(&saved.summary, "validation_notes")
         .iter()
@@ -246,6 +265,14 @@ pub fn comparison(r: &mut Report, saved: &Saved) {
     if !notes.is_empty() {
         r.push(Block::List(notes));
     }
+}
+
+/// `s` with its first letter in upper case.
+fn sentence_start(s: &str) -> String {
+    let mut c = s.chars();
+    c.next()
+        .map(|f| f.to_uppercase().chain(c).collect())
+        .unwrap_or_default()
 }
 
 /// The kind of an event's water entry, short: "keel" or "flare, d0 <m>" (the keel immersed to d0 at the
