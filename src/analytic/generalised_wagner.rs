@@ -38,9 +38,11 @@
 //! flat stations, against 5.7 kN/m for another sampling of the same event). The peaks
 //! ([`WagnerEstimate::force_peak`], [`WagnerEstimate::pressure_peak`]) are therefore taken from the
 //! first sample where the value rises again (the load of the contour beyond the flat, or of a flare);
-//! where it never rises the estimate has no peak, and says so in `notes`.
+//! where it never rises the estimate has no peak, and says so in `notes` (the rule of
+//! [`crate::analytic::peak`], shared with the assessment's sensor pressures).
 
 use crate::analytic::entry_kinematics::{EntryHistory, WATER_SOUND_SPEED};
+use crate::analytic::peak::peak_candidates;
 use crate::analytic::section_profile::Profile;
 use crate::error::Result;
 use std::f64::consts::PI;
@@ -75,19 +77,13 @@ impl WagnerEstimate {
     }
 
     /// The samples that may carry a peak of `x`: Wagner's own values (not the acoustic limit) and, after a
-    /// singular start (a flat keel wetted at once, or a section starting immersed, where the wetted
-    /// width starts at a finite value with dc/dt unbounded), only those from the end of its decay on:
-    /// the start's values fall from infinity, so their largest kept sample is set by the sampling, not
-    /// by the flow, and is no peak. Empty when `x` only decays (no later rise: no Wagner peak).
+    /// singular start ([`WagnerEstimate::singular_start`]), only those from the end of its decay on, by
+    /// the rule of [`crate::analytic::peak`]. Empty when `x` only decays (no later rise: no Wagner peak).
     fn peak_samples(&self, x: &[f64]) -> Vec<usize> {
         let kept: Vec<usize> = self.wagner_samples().collect();
-        if !self.singular_start {
-            return kept;
-        }
-        match kept.windows(2).position(|w| x[w[1]] > x[w[0]]) {
-            Some(i) => kept[i..].to_vec(),
-            None => Vec::new(),
-        }
+        peak_candidates(x, &kept, self.singular_start)
+            .map(<[usize]>::to_vec)
+            .unwrap_or_default()
     }
 
     /// Wagner's peak force (N/m) and its time, leaving out the samples at the acoustic limit (a flat

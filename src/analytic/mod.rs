@@ -5,6 +5,7 @@
 pub mod entry_kinematics;
 pub mod generalised_wagner;
 pub mod logvinovich_mlm;
+pub mod peak;
 pub mod section_profile;
 pub mod similarity;
 mod similarity_bem;

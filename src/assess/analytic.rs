@@ -15,6 +15,7 @@ use serde::{Deserialize, Serialize};
 use super::plan::EntryCase;
 use crate::analytic::generalised_wagner;
 use crate::analytic::logvinovich_mlm::Mlm;
+use crate::analytic::peak::peak_candidates;
 use crate::analytic::section_profile::Profile;
 use crate::error::{Error, Result};
 use crate::loads::peaks::peak;
@@ -112,10 +113,11 @@ pub(super) fn samples(motion: &MotionSpec) -> Result<(Vec<f64>, Vec<f64>)> {
 }
 
 /// Peak of (t, x) over the samples not flagged `acoustic`, with the impulse over the whole record.
-/// After a `singular` start (a flat keel, or an immersed start: the wetted width starts finite with
-/// dc/dt unbounded) a record that starts wetted falls from infinity, and only the samples from its
-/// first rise on can carry a peak (as for the Wagner force,
-/// [`generalised_wagner::WagnerEstimate::force_peak`]); the flag is true when none is left.
+/// After a `singular` start (a flat keel, or an immersed start) a record that starts wetted falls from
+/// infinity, and only the samples from its first rise on can carry a peak (the rule of
+/// [`crate::analytic::peak`], as for the Wagner force); the flag is true when none is left. A panel
+/// still dry at the start (first kept value not positive) does not fall from infinity and keeps all its
+/// samples.
 fn peak_outside(
     t: &[f64],
     x: &[f64],
@@ -123,20 +125,16 @@ fn peak_outside(
     singular: bool,
 ) -> (crate::loads::peaks::Peak, bool) {
     let mut p = peak(t, x);
-    let mut kept: Vec<usize> = (0..t.len().min(x.len()))
+    let kept: Vec<usize> = (0..t.len().min(x.len()))
         .filter(|&k| !acoustic.get(k).copied().unwrap_or(false))
         .collect();
-    let mut none_left = false;
-    if singular && kept.first().is_some_and(|&k| x[k] > 0.0) {
-        match kept.windows(2).position(|w| x[w[1]] > x[w[0]]) {
-            Some(i) => kept.drain(..i),
-            None => {
-                none_left = true;
-                kept.drain(..)
-            }
-        };
-    }
-    let best = kept.into_iter().max_by(|&a, &b| x[a].total_cmp(&x[b]));
+    let wetted_at_start = kept.first().is_some_and(|&k| x[k] > 0.0);
+    let candidates = peak_candidates(x, &kept, singular && wetted_at_start);
+    let best = candidates
+        .unwrap_or_default()
+        .iter()
+        .copied()
+        .max_by(|&a, &b| x[a].total_cmp(&x[b]));
     match best {
         Some(k) => {
             p.value = x[k];
@@ -147,7 +145,7 @@ fn peak_outside(
             p.time = 0.0;
         }
     }
-    (p, none_left)
+    (p, candidates.is_none())
 }
 
 /// Largest number of samples of an event's analytic histories after [`densify`] (the estimate's notes

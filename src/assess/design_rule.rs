@@ -26,7 +26,10 @@
 //!   [`NO_VALUE_FLAT_KEEL`], value `None`, and the reports say so rather than print a number;
 //! * a sensor the SPH water did not reach with a slamming pressure ([`super::results::DRY_FRACTION`]):
 //!   design = A (source `analytic (dry in SPH)`);
-//! * no SPH run: design = A (source `analytic`).
+//! * no SPH run: design = A (source `analytic`); where the analytic models give no peak (a panel
+//!   wetted at once on a flat keel or below an immersed start's waterline, whose pressure only falls
+//!   from the singular start), there is no design value: source [`NO_VALUE_WETTED_AT_START`], value
+//!   `None`.
 //!
 //! Why this rule: the analytic sensor pressure is the modified Logvinovich model corrected to the
 //! nonlinear similarity solution of the local wedge (within the stated error of
@@ -38,6 +41,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::analytic::SensorEstimate;
 use crate::loads::anatomy::ImpactStatus;
 
 /// What the rule needs of one SPH quantity.
@@ -56,6 +60,46 @@ pub struct SphQuantity<'a> {
     /// between the reported peak and the next level's, as a fraction of the reported one, which stands
     /// in for the GCI (`None` when that level has no slamming peak).
     pub spread: Option<f64>,
+}
+
+/// The analytic estimate A of one quantity, as the rule takes it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum AnalyticPeak {
+    /// The models' peak.
+    Peak(f64),
+    /// The models compute the quantity, but its values are only the decay of a singular start (a panel
+    /// wetted at once on a flat keel or below an immersed start's waterline): no peak
+    /// ([`SensorEstimate::no_peak_after_start`]).
+    NoPeakAfterStart,
+    /// No analytic estimate of the quantity.
+    Absent,
+}
+
+impl AnalyticPeak {
+    /// The peak, where there is one.
+    pub fn value(self) -> Option<f64> {
+        match self {
+            AnalyticPeak::Peak(v) => Some(v),
+            AnalyticPeak::NoPeakAfterStart | AnalyticPeak::Absent => None,
+        }
+    }
+
+    /// The analytic estimate of a sensor panel (`None`: the event has no estimate of that sensor).
+    pub fn of_sensor(estimate: Option<&SensorEstimate>) -> Self {
+        match estimate {
+            None => AnalyticPeak::Absent,
+            Some(e) => e
+                .peak()
+                .map_or(AnalyticPeak::NoPeakAfterStart, AnalyticPeak::Peak),
+        }
+    }
+}
+
+impl From<Option<f64>> for AnalyticPeak {
+    /// A peak, or no estimate at all.
+    fn from(a: Option<f64>) -> Self {
+        a.map_or(AnalyticPeak::Absent, AnalyticPeak::Peak)
+    }
 }
 
 /// A design value and where it comes from.
@@ -108,19 +152,39 @@ fn none_label(status: Option<ImpactStatus>) -> &'static str {
 pub const NO_VALUE_WETTED_AT_START: &str =
     "none (wetted at contact: no analytic peak, and no SPH run in this event)";
 
+/// The design value without an SPH run: the analytic peak (source `analytic`), no value where the
+/// analytic values are only the decay of a singular start ([`NO_VALUE_WETTED_AT_START`]), `None`
+/// without an analytic estimate.
+fn without_sph(a: AnalyticPeak) -> Option<Decision> {
+    match a {
+        AnalyticPeak::Peak(v) => Some(Decision {
+            value: Some(v),
+            source: "analytic",
+            uncertainty: None,
+        }),
+        AnalyticPeak::NoPeakAfterStart => Some(Decision {
+            value: None,
+            source: NO_VALUE_WETTED_AT_START,
+            uncertainty: None,
+        }),
+        AnalyticPeak::Absent => None,
+    }
+}
+
 /// The design value from the SPH quantity `q` (none without an SPH run) and the analytic estimate `a`
-/// (none where the models give no peak: a panel wetted at once on a flat keel, or at an immersed
-/// start). `None` when neither SPH nor the analytic estimate has the quantity.
-pub fn decide(q: Option<SphQuantity>, a: Option<f64>) -> Option<Decision> {
+/// (no peak for a panel wetted at once on a flat keel, or at an immersed start). `None` when neither
+/// SPH nor the analytic estimate has the quantity.
+pub fn decide(q: Option<SphQuantity>, a: AnalyticPeak) -> Option<Decision> {
+    let Some(q) = q else {
+        return without_sph(a);
+    };
+    let a = a.value();
     let analytic = |source| {
         a.map(|v| Decision {
             value: Some(v),
             source,
             uncertainty: None,
         })
-    };
-    let Some(q) = q else {
-        return analytic("analytic");
     };
     if !q.wetted {
         return analytic(super::results::DRY_SOURCE);
@@ -176,14 +240,26 @@ mod tests {
     #[test]
     fn unconverged_sph_never_lowers_the_design_below_analytic() {
         // S093-4 of the committed Ochi report: SPH 1.79 kPa, analytic 3.58 kPa, not converged
-        let d = decide(Some(q(1790.0, Some(0.4), "not_converged")), Some(3580.0)).unwrap();
+        let d = decide(
+            Some(q(1790.0, Some(0.4), "not_converged")),
+            AnalyticPeak::Peak(3580.0),
+        )
+        .unwrap();
         assert_eq!(d.value, Some(3580.0));
         assert_eq!(d.source, "analytic (SPH not converged)");
         // a mismatched companion is not converged either
-        let d = decide(Some(q(970.0, None, "mismatched")), Some(2860.0)).unwrap();
+        let d = decide(
+            Some(q(970.0, None, "mismatched")),
+            AnalyticPeak::Peak(2860.0),
+        )
+        .unwrap();
         assert_eq!(d.value, Some(2860.0));
         // an unconverged SPH peak above analytic keeps its uncertainty
-        let d = decide(Some(q(5000.0, Some(0.3), "not_converged")), Some(3000.0)).unwrap();
+        let d = decide(
+            Some(q(5000.0, Some(0.3), "not_converged")),
+            AnalyticPeak::Peak(3000.0),
+        )
+        .unwrap();
         assert!((d.value.unwrap() - 6500.0).abs() < 1e-9);
         assert_eq!(d.source, "sph (not converged)");
     }
@@ -194,19 +270,27 @@ mod tests {
         // another event; the design value is at least the larger of the two
         let mut m = q(2778.0, None, "mismatched");
         m.spread = Some((3921.6 - 2778.0) / 2778.0);
-        let d = decide(Some(m), Some(2250.0)).unwrap();
+        let d = decide(Some(m), AnalyticPeak::Peak(2250.0)).unwrap();
         assert!((d.value.unwrap() - 3921.6).abs() < 1e-6, "{d:?}");
         assert!((d.uncertainty.unwrap() - 1143.6).abs() < 1e-6);
         assert_eq!(d.source, "sph (not converged)");
         // without a companion peak there is no spread, and the rule is max(P, A)
-        let d = decide(Some(q(2190.0, None, "mismatched")), Some(2620.0)).unwrap();
+        let d = decide(
+            Some(q(2190.0, None, "mismatched")),
+            AnalyticPeak::Peak(2620.0),
+        )
+        .unwrap();
         assert_eq!(d.value, Some(2620.0));
         assert!(d.uncertainty.is_none());
     }
 
     #[test]
     fn converged_sph_carries_its_band() {
-        let d = decide(Some(q(2000.0, Some(0.04), "converged")), Some(3000.0)).unwrap();
+        let d = decide(
+            Some(q(2000.0, Some(0.04), "converged")),
+            AnalyticPeak::Peak(3000.0),
+        )
+        .unwrap();
         assert!((d.value.unwrap() - 2080.0).abs() < 1e-9);
         assert_eq!(d.source, "sph (converged)");
         assert!((d.uncertainty.unwrap() - 80.0).abs() < 1e-9);
@@ -227,7 +311,7 @@ mod tests {
                     wetted: true,
                     spread: None,
                 }),
-                Some(4000.0),
+                AnalyticPeak::Peak(4000.0),
             )
             .unwrap();
             assert_eq!(d.value, Some(4000.0));
@@ -242,9 +326,45 @@ mod tests {
             wetted: true,
             spread: None,
         };
-        let d = decide(Some(flat), None).unwrap();
+        let d = decide(Some(flat), AnalyticPeak::Absent).unwrap();
         assert_eq!(d.value, None);
         assert_eq!(d.source, NO_VALUE_FLAT_KEEL);
-        assert_eq!(decide(None, Some(1.0)).unwrap().source, "analytic");
+        assert_eq!(
+            decide(Some(flat), AnalyticPeak::NoPeakAfterStart),
+            decide(Some(flat), AnalyticPeak::Absent)
+        );
+        assert_eq!(
+            decide(None, AnalyticPeak::Peak(1.0)).unwrap().source,
+            "analytic"
+        );
+    }
+
+    #[test]
+    fn without_an_sph_run_a_panel_wetted_at_contact_has_no_design_value() {
+        let d = decide(None, AnalyticPeak::NoPeakAfterStart).unwrap();
+        assert_eq!(d.value, None);
+        assert_eq!(d.source, NO_VALUE_WETTED_AT_START);
+        assert!(d.uncertainty.is_none());
+        assert_eq!(decide(None, AnalyticPeak::Absent), None);
+        // the estimate of a sensor maps onto the rule's input
+        let mut e = SensorEstimate {
+            name: "S1".into(),
+            peak_pa: 1200.0,
+            peak_time_s: 0.01,
+            impulse_pa_s: 1.0,
+            acoustic_bound_pa: None,
+            uncorrected_peak_pa: None,
+            no_peak_after_start: false,
+        };
+        assert_eq!(
+            AnalyticPeak::of_sensor(Some(&e)),
+            AnalyticPeak::Peak(1200.0)
+        );
+        e.no_peak_after_start = true;
+        assert_eq!(
+            AnalyticPeak::of_sensor(Some(&e)),
+            AnalyticPeak::NoPeakAfterStart
+        );
+        assert_eq!(AnalyticPeak::of_sensor(None), AnalyticPeak::Absent);
     }
 }

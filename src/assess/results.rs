@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 use serde::{Deserialize, Serialize};
 
 use super::analytic::Estimate;
-use super::design_rule::{Decision, SphQuantity, decide};
+use super::design_rule::{AnalyticPeak, Decision, SphQuantity, decide};
 use crate::error::{Error, Result};
 use crate::files::write_text_atomic;
 use crate::loads::anatomy::{ImpactStatus, Phase};
@@ -185,7 +185,7 @@ pub fn sensor_warnings(r: &SphRecord, analytic: Option<&Estimate>) -> Vec<String
         .sensors
         .iter()
         .filter_map(|q| {
-            let design = decide(Some(q.quantity()), mlm(&q.name))?.value;
+            let design = decide(Some(q.quantity()), mlm(&q.name).into())?.value;
             let load = q.later_load(design)?;
             Some(format!(
                 "{} ({:.2} kPa at {:.3} s, of which {:.2} kPa hydrostatic; design {})",
@@ -297,7 +297,13 @@ impl EventResult {
             wetted: true,
             spread: s.force_spread,
         });
-        decide(q, self.analytic.as_ref().and_then(|a| a.force_peak_n_per_m))
+        decide(
+            q,
+            self.analytic
+                .as_ref()
+                .and_then(|a| a.force_peak_n_per_m)
+                .into(),
+        )
     }
 
     /// The section force peak used for design (N/m) and its source ([`super::design_rule`]).
@@ -313,22 +319,11 @@ impl EventResult {
             .analytic
             .as_ref()
             .and_then(|a| a.sensors.iter().find(|q| q.name == name));
-        let analytic = estimate.and_then(|q| q.peak());
-        match &self.sph {
-            Some(s) => {
-                let q = s.sensors.iter().find(|q| q.name == name)?;
-                decide(Some(q.quantity()), analytic)
-            }
-            None => decide(None, analytic).or_else(|| {
-                estimate
-                    .filter(|q| q.no_peak_after_start)
-                    .map(|_| Decision {
-                        value: None,
-                        source: super::design_rule::NO_VALUE_WETTED_AT_START,
-                        uncertainty: None,
-                    })
-            }),
-        }
+        let q = match &self.sph {
+            Some(s) => Some(s.sensors.iter().find(|q| q.name == name)?.quantity()),
+            None => None,
+        };
+        decide(q, AnalyticPeak::of_sensor(estimate))
     }
 
     /// A sensor's design value (Pa) for this event and its source ([`super::design_rule`]).
