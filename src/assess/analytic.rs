@@ -115,20 +115,32 @@ pub(super) fn samples(motion: &MotionSpec) -> Result<(Vec<f64>, Vec<f64>)> {
 /// Peak of (t, x) over the samples not flagged `acoustic`, with the impulse over the whole record.
 /// After a `singular` start (a flat keel, or an immersed start) a record that starts wetted falls from
 /// infinity, and only the samples from its first rise on can carry a peak (the rule of
-/// [`crate::analytic::peak`], as for the Wagner force); the flag is true when none is left. A panel
-/// still dry at the start (first kept value not positive) does not fall from infinity and keeps all its
-/// samples.
+/// [`crate::analytic::peak`], as for the Wagner force); the flag is true when none is left. Such a
+/// panel's impact is the contact crossing the part of it that was dry at the start, so its peak is
+/// looked for only up to `passed`, the first sample at which the contact point has passed the panel's
+/// outer edge (`None`: it never does): a panel wetted over its whole width at the start has no impact
+/// peak, and a later rise of its pressure (the velocity history acting on water already wetted, a few
+/// pascals on the Ochi flat keels, found once the samples were fine enough to show it) is not one. A
+/// panel still dry at the start (first kept value not positive) does not fall from infinity and keeps
+/// all its samples.
 fn peak_outside(
     t: &[f64],
     x: &[f64],
     acoustic: &[bool],
     singular: bool,
+    passed: Option<usize>,
 ) -> (crate::loads::peaks::Peak, bool) {
     let mut p = peak(t, x);
-    let kept: Vec<usize> = (0..t.len().min(x.len()))
+    let mut kept: Vec<usize> = (0..t.len().min(x.len()))
         .filter(|&k| !acoustic.get(k).copied().unwrap_or(false))
         .collect();
     let wetted_at_start = kept.first().is_some_and(|&k| x[k] > 0.0);
+    if singular
+        && wetted_at_start
+        && let Some(l) = passed
+    {
+        kept.retain(|&k| k <= l);
+    }
     let candidates = peak_candidates(x, &kept, singular && wetted_at_start);
     let best = candidates
         .unwrap_or_default()
@@ -228,8 +240,8 @@ pub fn estimate_in(case: &EntryCase, rho: f64) -> Result<Estimate> {
         .iter()
         .map(|s| s.width_m)
         .fold(f64::INFINITY, f64::min);
+    let profile = Profile::from_half_points(&case.half_points)?;
     let (t, v, capped) = if narrowest.is_finite() {
-        let profile = Profile::from_half_points(&case.half_points)?;
         let contact_arc: Vec<f64> = first
             .half_width
             .iter()
@@ -305,13 +317,22 @@ pub fn estimate_in(case: &EntryCase, rho: f64) -> Result<Estimate> {
             crate::analytic::similarity_table::MAX_DEG
         ));
     }
+    // Arc length of the contact point from the keel at each sample.
+    let contact_arc: Vec<f64> = mlm
+        .history()
+        .states
+        .iter()
+        .map(|st| profile.arc_length_to(st.c))
+        .collect();
     let sensors = case
         .sensors
         .iter()
         .zip(histories.iter().zip(&raw_histories))
         .map(|(s, (history, raw))| {
-            let (p, no_peak) = peak_outside(&times, history, &acoustic, w.singular_start);
-            let (p_raw, _) = peak_outside(&times, raw, &acoustic, w.singular_start);
+            let outer_edge = s.s_m + 0.5 * s.width_m;
+            let passed = contact_arc.iter().position(|&a| a > outer_edge);
+            let (p, no_peak) = peak_outside(&times, history, &acoustic, w.singular_start, passed);
+            let (p_raw, _) = peak_outside(&times, raw, &acoustic, w.singular_start, passed);
             let bound = history
                 .iter()
                 .zip(&acoustic)
@@ -352,19 +373,28 @@ mod peak_tests {
         let acoustic = [true, false, false, false, false, false];
         // wetted at once and only decaying: no peak after the start
         let decay = [9e9, 500.0, 300.0, 200.0, 150.0, 120.0];
-        let (_, none) = peak_outside(&t, &decay, &acoustic, true);
+        let (_, none) = peak_outside(&t, &decay, &acoustic, true, None);
         assert!(none);
         // decaying, then the contact loads the panel again: the peak is the later one
         let later = [9e9, 500.0, 300.0, 200.0, 350.0, 280.0];
-        let (p, none) = peak_outside(&t, &later, &acoustic, true);
+        let (p, none) = peak_outside(&t, &later, &acoustic, true, None);
         assert!(!none);
         assert_eq!((p.value, p.time), (350.0, 4.0));
         // a panel dry at the start is not affected
         let dry = [0.0, 0.0, 100.0, 400.0, 300.0, 200.0];
-        let (p, none) = peak_outside(&t, &dry, &acoustic, true);
+        let (p, none) = peak_outside(&t, &dry, &acoustic, true, None);
         assert!(!none && p.value == 400.0);
+        // a rise after the contact has passed the panel's outer edge (sample 2 here) is not its impact
+        let (_, none) = peak_outside(&t, &later, &acoustic, true, Some(2));
+        assert!(none);
+        // a rise before it is
+        let (p, none) = peak_outside(&t, &later, &acoustic, true, Some(4));
+        assert!(!none && p.value == 350.0);
+        // a panel dry at the start keeps all its samples whatever the contact does
+        let (p, _) = peak_outside(&t, &dry, &acoustic, true, Some(1));
+        assert_eq!(p.value, 400.0);
         // without a singular start the largest kept sample is the peak, as before
-        let (p, _) = peak_outside(&t, &decay, &acoustic, false);
+        let (p, _) = peak_outside(&t, &decay, &acoustic, false, None);
         assert_eq!(p.value, 500.0);
     }
 }

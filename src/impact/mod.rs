@@ -132,7 +132,7 @@ pub fn air_cushion_warning(aft_of_fp: f64, points: &[[f64; 2]]) -> Option<String
     let flat = flat_keel_half_width(points);
     let widest = points.iter().map(|p| p[0]).fold(0.0, f64::max);
     (flat > 0.0 && flat >= 0.05 * widest).then(|| {
-        format!(
+        let mut w = format!(
             "station {aft_of_fp} Lpp has a flat keel (half-width {flat:.4} m): its bottom impact is \
              acoustic, which single-phase SPH with an artificial sound speed does not compute, and the \
              analytic models give no peak on the flat (their pressure only falls from the flat keel's \
@@ -140,6 +140,64 @@ pub fn air_cushion_warning(aft_of_fp: f64, points: &[[f64; 2]]) -> Option<String
              water-hammer pressure rho c_w V is the upper bound of an impact without air, and air trapped \
              under the flat bottom cushions the real impact, which needs a two-phase model (Veen 2010 s. \
              6.3: single-phase SPH read about twice Ochi's measured peaks at his flat section)"
-        )
+        );
+        if let Some(beta) = deadrise_beyond_flat_deg(points, flat)
+            && beta < LOW_DEADRISE_DEG
+        {
+            w += &format!(
+                "; beyond the flat the contour starts at {beta:.1} deg of deadrise, below \
+                 {LOW_DEADRISE_DEG:.0} deg, where air cushions the impact too, so the water-only peaks of \
+                 the panels there (Wagner-type pressures grow as the cotangent of the deadrise squared) \
+                 over-state it"
+            );
+        }
+        w
     })
+}
+
+/// Deadrise below which the water meets the hull through a cushion of air (deg): about 15-20 deg
+/// (the brief of the air-cushion issue; Veen 2010 s. 5 for Breder's 10 deg wedge); the lower end is used.
+pub const LOW_DEADRISE_DEG: f64 = 15.0;
+
+/// The deadrise (deg) of the first contour segment beyond a flat keel of half-width `flat`, `None` when
+/// the contour has none.
+fn deadrise_beyond_flat_deg(points: &[[f64; 2]], flat: f64) -> Option<f64> {
+    let k = points.iter().position(|p| p[0] >= flat)?;
+    let (a, b) = (points[k], *points.get(k + 1)?);
+    let (dy, dz) = (b[0] - a[0], b[1] - a[1]);
+    (dy > 0.0 || dz > 0.0).then(|| dz.atan2(dy).to_degrees())
+}
+
+#[cfg(test)]
+mod air_cushion_tests {
+    use super::{LOW_DEADRISE_DEG, air_cushion_warning, deadrise_beyond_flat_deg};
+
+    #[test]
+    fn a_low_deadrise_beyond_the_flat_is_named() {
+        // flat keel, then a bilge starting at 10 deg
+        let bilge = [
+            [0.0, 0.0],
+            [0.1, 0.0],
+            [0.15, 0.05 * 10f64.to_radians().tan()],
+            [0.2, 0.3],
+        ];
+        let b = deadrise_beyond_flat_deg(&bilge, 0.1).unwrap();
+        assert!((b - 10.0).abs() < 1e-9, "{b}");
+        assert!(
+            air_cushion_warning(0.1, &bilge)
+                .unwrap()
+                .contains("below 15 deg")
+        );
+        // flat keel, then a 30 deg V: the flat alone is warned about
+        let v = [
+            [0.0, 0.0],
+            [0.1, 0.0],
+            [0.2, 0.1 * 30f64.to_radians().tan()],
+            [0.3, 0.3],
+        ];
+        let b = deadrise_beyond_flat_deg(&v, 0.1).unwrap();
+        assert!((b - 30.0).abs() < 1e-9 && b > LOW_DEADRISE_DEG);
+        let w = air_cushion_warning(0.1, &v).unwrap();
+        assert!(!w.contains("beyond the flat"), "{w}");
+    }
 }
