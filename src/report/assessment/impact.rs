@@ -402,8 +402,11 @@ pub fn section(r: &mut Report, saved: &Saved) {
                     png: png.clone(),
                     caption: format!(
                         "Particles coloured by pressure at the instant of the highest sensor pressure \
-                         after the contact transient; the colour scale runs from zero to a round value \
-                         above that sensor pressure (higher pressures take its top colour) [figures/{name}]"
+                         after the contact transient, whatever its phase: often the immersion after the \
+                         slam (hydrostatic and inertial pressure), not a slamming peak; the time printed \
+                         on the picture tells which (the sign-off section gives each panel's slamming \
+                         peak time). The colour scale runs from zero to a round value above that sensor \
+                         pressure (higher pressures take its top colour) [figures/{name}]"
                     ),
                     width_mm: 140.0,
                 });
