@@ -134,14 +134,11 @@ fn peak_outside(
     let mut kept: Vec<usize> = (0..t.len().min(x.len()))
         .filter(|&k| !acoustic.get(k).copied().unwrap_or(false))
         .collect();
-    let wetted_at_start = kept.first().is_some_and(|&k| x[k] > 0.0);
-    if singular
-        && wetted_at_start
-        && let Some(l) = passed
-    {
+    let falls_from_start = singular && kept.first().is_some_and(|&k| x[k] > 0.0);
+    if falls_from_start && let Some(l) = passed {
         kept.retain(|&k| k <= l);
     }
-    let candidates = peak_candidates(x, &kept, singular && wetted_at_start);
+    let candidates = peak_candidates(x, &kept, falls_from_start);
     let best = candidates
         .unwrap_or_default()
         .iter()
@@ -425,10 +422,8 @@ mod densify_tests {
             motion: MotionSpec::Prescribed {
                 table: (0..n)
                     .map(|k| {
-                        [
-                            0.2 * k as f64 / (n - 1) as f64,
-                            2.0 - 2.0 * k as f64 / (n - 1) as f64 * 0.5,
-                        ]
+                        let f = k as f64 / (n - 1) as f64;
+                        [0.2 * f, 2.0 - f]
                     })
                     .collect(),
             },

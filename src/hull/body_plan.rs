@@ -342,6 +342,7 @@ mod callout_tests {
 mod station_label_tests {
     use super::{STATION_PITCH_PX, body_plan_svg};
     use crate::hull::Hull;
+    use crate::hull::generate::GeneratedHull;
 
     /// Every station of the bundled hulls has its label (midship once), and no two labels overlap: the
     /// upright labels stand at least the pitch apart (the Ochi hull's 0.174 and 0.227 were left
@@ -349,11 +350,8 @@ mod station_label_tests {
     #[test]
     fn every_station_is_labelled_and_no_labels_overlap() {
         let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("hulls");
-        for name in [
-            "ochi-vform.toml",
-            "wigley-iii.toml",
-            "car-carrier-hm2005.toml",
-        ] {
+        for bundled in GeneratedHull::ALL {
+            let name = bundled.file_name();
             let hull = Hull::from_file(&dir.join(name)).unwrap();
             let svg = body_plan_svg(&hull).unwrap();
             // the station labels: the numbers turned upright (the z axis title is upright too)

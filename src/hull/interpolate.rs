@@ -380,6 +380,7 @@ mod tests {
 #[cfg(test)]
 mod bundled {
     use crate::hull::Hull;
+    use crate::hull::generate::GeneratedHull;
     use crate::hull::validate::check_section;
 
     /// Every interpolated section of the bundled hulls is itself a valid contour (keel on the centreline,
@@ -387,11 +388,8 @@ mod bundled {
     #[test]
     fn interpolated_sections_of_bundled_hulls_are_valid_contours() {
         let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("hulls");
-        for name in [
-            "wigley-iii.toml",
-            "ochi-vform.toml",
-            "car-carrier-hm2005.toml",
-        ] {
+        for bundled in GeneratedHull::ALL {
+            let name = bundled.file_name();
             let hull = Hull::from_file(&dir.join(name)).unwrap();
             let (xa, xf) = hull.x_range();
             for i in 0..=500 {

@@ -281,6 +281,14 @@ pub fn at(e: &Value, station: f64) -> bool {
     num(e, "station").is_some_and(|s| (s - station).abs() < 1e-9)
 }
 
+/// `s` with its first letter in upper case.
+pub fn capitalised(s: &str) -> String {
+    let mut c = s.chars();
+    c.next()
+        .map(|f| f.to_uppercase().chain(c).collect())
+        .unwrap_or_default()
+}
+
 /// A speed (m/s) as printed: at most three decimals, trailing zeros dropped ("10.289", "2.2"), "-" for
 /// none.
 pub fn speed_text(v: Option<f64>) -> String {

@@ -5,7 +5,7 @@
 use serde_json::Value;
 
 use super::Report;
-use super::data::{Saved, list, num, speed_text, text};
+use super::data::{Saved, capitalised, list, num, speed_text, text};
 use crate::report::document::Block;
 use crate::report::figure::{Figure, Mark, RefLine, Series};
 
@@ -131,12 +131,7 @@ fn station_figure(
 
 /// Text with its first letter in upper case and a full stop at the end.
 fn sentence(s: &str) -> String {
-    let mut c = s.trim().chars();
-    let mut out: String = c
-        .next()
-        .map(|f| f.to_uppercase().collect())
-        .unwrap_or_default();
-    out.extend(c);
+    let mut out = capitalised(s.trim());
     if !out.is_empty() && !out.ends_with('.') {
         out.push('.');
     }

@@ -6,7 +6,7 @@
 use serde_json::Value;
 
 use super::Report;
-use super::data::{Saved, at, list, num, speed_text, text};
+use super::data::{Saved, at, capitalised, list, num, speed_text, text};
 use super::front::kpa;
 use crate::report::document::Block;
 use crate::report::figure::{Figure, Mark, Series};
@@ -243,7 +243,7 @@ pub fn comparison(r: &mut Report, saved: &Saved) {
             .filter_map(|c| {
                 c["reading"]
                     .as_str()
-                    .map(|why| format!("{}: {why}", sentence_start(&show(c, "check"))))
+                    .map(|why| format!("{}: {why}", capitalised(&show(c, "check"))))
             })
             .collect();
         if !readings.is_empty() {
@@ -265,14 +265,6 @@ pub fn comparison(r: &mut Report, saved: &Saved) {
     if !notes.is_empty() {
         r.push(Block::List(notes));
     }
-}
-
-/// `s` with its first letter in upper case.
-fn sentence_start(s: &str) -> String {
-    let mut c = s.chars();
-    c.next()
-        .map(|f| f.to_uppercase().chain(c).collect())
-        .unwrap_or_default()
 }
 
 /// The kind of an event's water entry, short: "keel" or "flare, d0 <m>" (the keel immersed to d0 at the
