@@ -67,6 +67,7 @@ fn still_tank(dp: f64) -> Setup {
         t_end: 3.0,
         initial_immersion: 0.0,
         refinement: None,
+        air: None,
         sensors: Vec::new(),
         snapshot_interval: None,
         filter_cutoff_hz: None,

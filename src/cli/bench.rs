@@ -1,6 +1,7 @@
 //! `slamtool bench`: SPH throughput on a standard case (30 deg wedge entering at 5 m/s, about 100,000 fluid
 //! particles in a half tank of 4 b x 3 b, uniform or refined), a fixed number of time steps; optionally
-//! on 1, 2, ... threads in one run (`--threads-scan`) for the thread scaling.
+//! on 1, 2, ... threads in one run (`--threads-scan`) for the thread scaling; with `--air`, the same case
+//! with air as a second phase (`slamtool::sph::air`), whose figures count the air particles as fluid.
 
 use clap::{Args, ValueEnum};
 use slamtool::provenance::{GIT_COMMIT, TOOL};
@@ -13,6 +14,7 @@ pub const EXAMPLES: &str = "\
 Examples:
   slamtool bench --steps 50 --particles 20000
   slamtool bench --tank refined --threads-scan
+  slamtool bench --air --steps 100
   RAYON_NUM_THREADS=1 slamtool bench --json";
 
 /// The tank of the benchmark.
@@ -39,6 +41,10 @@ pub struct BenchArgs {
     /// the speed-up over 1 thread.
     #[arg(long)]
     threads_scan: bool,
+    /// The same case with air as a second phase (a layer over the water around the wedge): the
+    /// two-phase passes, whose particle-steps count the air particles as fluid.
+    #[arg(long)]
+    air: bool,
     #[command(flatten)]
     json: JsonArg,
 }
@@ -75,6 +81,11 @@ fn setup(a: &BenchArgs) -> slamtool::Result<Setup> {
             tank_half_width: Some(4.0 * b),
             tank_depth: Some(3.0 * b),
             refinement: Some(a.tank == BenchTank::Refined),
+            air: Some(if a.air {
+                sph::air::AirChoice::On
+            } else {
+                sph::air::AirChoice::Off
+            }),
             ..Default::default()
         },
     )
@@ -83,7 +94,7 @@ fn setup(a: &BenchArgs) -> slamtool::Result<Setup> {
 /// Build the case and time `steps` steps on the current thread pool.
 fn time_run(setup: Setup, steps: u64) -> slamtool::Result<Timing> {
     let mut sim = Simulation::new(setup)?;
-    let n_fluid = sim.n_fluid();
+    let n_fluid = sim.n_fluid() + sim.n_air();
     let n_all = sim.pt.len();
     let c0 = sim.counters.clone();
     let t0 = std::time::Instant::now();
@@ -167,6 +178,7 @@ pub fn run(a: BenchArgs) -> slamtool::Result<()> {
         "warnings": [],
         "outputs": null,
         "case": "30 deg wedge, 5 m/s, half tank 4b x 3b, b = 0.25 m",
+        "air": a.air,
         "tank": tank,
         "steps": a.steps,
         "fluid_particles": last.n_fluid,
@@ -186,12 +198,15 @@ pub fn run(a: BenchArgs) -> slamtool::Result<()> {
         return Ok(());
     }
     println!(
-        "case                      30 deg wedge at 5 m/s, {tank} tank, {} steps",
+        "case                      30 deg wedge at 5 m/s, {tank} tank{}, {} steps",
+        if a.air { ", with air" } else { "" },
         a.steps
     );
     println!(
-        "particles                 {} fluid, {} with wall and body dummies",
-        last.n_fluid, last.n_all
+        "particles                 {} fluid{}, {} with wall and body dummies",
+        last.n_fluid,
+        if a.air { " (water and air)" } else { "" },
+        last.n_all
     );
     println!("bytes per particle        {}", last.bytes_per_particle);
     for t in &runs {

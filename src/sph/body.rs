@@ -101,6 +101,25 @@ impl Section {
         self.points.iter().map(|p| p[0]).fold(0.0, f64::max)
     }
 
+    /// Half-breadth of the waterline at height `z` above the keel (m): the largest y of the starboard
+    /// half at or below that height (the flat of a flat keel at z = 0).
+    pub fn half_breadth_at(&self, z: f64) -> f64 {
+        let mut y: f64 = 0.0;
+        for w in self.points.windows(2) {
+            let (a, b) = (w[0], w[1]);
+            if a[1] <= z {
+                y = y.max(a[0]);
+            }
+            if b[1] <= z {
+                y = y.max(b[0]);
+            }
+            if (a[1] - z) * (b[1] - z) < 0.0 {
+                y = y.max(a[0] + (z - a[1]) / (b[1] - a[1]) * (b[0] - a[0]));
+            }
+        }
+        y
+    }
+
     /// Smallest local deadrise angle (rad) of the contour segments below `z_max`: the angle of each
     /// segment with the horizontal, in [0, pi/2]. Drives the expected peak pressure.
     pub fn min_deadrise_below(&self, z_max: f64) -> f64 {
@@ -454,6 +473,16 @@ impl Motion {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn waterline_half_breadth() {
+        let s = Section::from_half_points(vec![[0.0, 0.0], [0.1, 0.0], [0.2, 0.1], [0.2, 0.3]])
+            .unwrap();
+        assert_eq!(s.half_breadth_at(0.0), 0.1);
+        assert!((s.half_breadth_at(0.05) - 0.15).abs() < 1e-12);
+        assert_eq!(s.half_breadth_at(0.2), 0.2);
+        assert_eq!(s.half_breadth_at(-0.01), 0.0);
+    }
 
     #[test]
     fn wedge_contains_and_dummies() {

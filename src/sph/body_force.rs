@@ -33,6 +33,7 @@
 
 use rayon::prelude::*;
 
+use crate::sph::air::AirPhase;
 use crate::sph::body::{Section, nearest_on_polyline, outward_normal};
 use crate::sph::neighbour_lists::{LIST_CHUNK, ListsAt, NeighbourLists};
 use crate::sph::particles::{Kind, Particles};
@@ -81,13 +82,15 @@ impl WallNormals {
 /// body's height range widened by the dummy layers and the kernel support): the particles are sorted by
 /// grid row, so a chunk whose first and last particles lie both below or both above it is skipped.
 /// With `normal_part` (the contour normals and the keel height), only the wall-normal part of each pair
-/// force counts (see the module doc).
+/// force counts (see the module doc). With `air`, the air particles' pair forces count too (with the
+/// air's wall term, [`crate::sph::air`]).
 #[allow(clippy::too_many_arguments)]
 pub fn interaction_force(
     lists: &NeighbourLists,
     pt: &Particles,
     riemann: bool,
     c0: f64,
+    air: Option<&AirPhase>,
     mirror: bool,
     z_range: [f64; 2],
     normal_part: Option<(&WallNormals, f64)>,
@@ -110,10 +113,11 @@ pub fn interaction_force(
             }
             for k in 0..n {
                 let i = c * LIST_CHUNK + k;
-                if pt.kind[i] != Kind::Fluid {
+                if !pt.kind[i].is_fluid() {
                     continue;
                 }
-                if let Some([py, pz]) = body_pair_force(&at, c, k, i, pt, riemann, c0, normal_part)
+                if let Some([py, pz]) =
+                    body_pair_force(&at, c, k, i, pt, riemann, c0, air, normal_part)
                 {
                     fy += py;
                     fz += pz;
@@ -136,11 +140,13 @@ pub fn interaction_force(
 /// particle stands for (dp about the nearest contour point of i) that lies on the panel
 /// ([`SensorSet::panel_weight`]; body frame: keel at `z_keel`; starboard fluid only, y >= 0). One entry
 /// per sensor, summed per chunk and then over the chunks in their fixed order (thread-count independent).
+#[allow(clippy::too_many_arguments)]
 pub fn panel_forces<'a>(
     lists: &NeighbourLists,
     pt: &Particles,
     riemann: bool,
     c0: f64,
+    air: Option<&AirPhase>,
     z_keel: f64,
     set: &SensorSet,
     scratch: &'a mut ForceScratch,
@@ -164,10 +170,11 @@ pub fn panel_forces<'a>(
             let n = LIST_CHUNK.min(pt.len().saturating_sub(c * LIST_CHUNK));
             for k in 0..n {
                 let i = c * LIST_CHUNK + k;
-                if pt.kind[i] != Kind::Fluid || pt.y[i] < 0.0 {
+                if !pt.kind[i].is_fluid() || pt.y[i] < 0.0 {
                     continue;
                 }
-                let Some([fy, fz]) = body_pair_force(&at, c, k, i, pt, riemann, c0, None) else {
+                let Some([fy, fz]) = body_pair_force(&at, c, k, i, pt, riemann, c0, air, None)
+                else {
                     continue;
                 };
                 let s = set.arc_of(pt.y[i], pt.z[i] - z_keel);
@@ -202,10 +209,17 @@ fn body_pair_force(
     pt: &Particles,
     riemann: bool,
     c0: f64,
+    air: Option<&AirPhase>,
     normal_part: Option<(&WallNormals, f64)>,
 ) -> Option<[f64; 2]> {
     let (yi, zi, vyi, vzi) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i]);
     let (p_i, rho_i, vol_i) = (pt.p[i], pt.rho[i], pt.vol[i]);
+    // An air particle meets the wall with its own pressure and its phase's sound speed.
+    let wall_air = match (pt.kind[i], air) {
+        (Kind::Air, Some(a)) => Some(a.c),
+        (Kind::Air, None) => return None,
+        _ => None,
+    };
     let (mut fy, mut fz, mut touches) = (0.0, 0.0, false);
     // The wall normal at i's foot (body frame: keel at z_keel), once i is found to touch the body.
     let mut normal: Option<Option<[f64; 2]>> = None;
@@ -217,7 +231,10 @@ fn body_pair_force(
         touches = true;
         let (dy, dz) = e.offset(yi, zi, &pt.y, &pt.z);
         let vyj = if e.mirrored { -pt.vy[j] } else { pt.vy[j] };
-        let psum = if riemann {
+        let psum = if let Some(c_air) = wall_air {
+            let vdotr = (vyi - vyj) * dy + (vzi - pt.vz[j]) * dz;
+            riemann::pressure_sum(p_i, p_i, rho_i, rho_i, vdotr, e.r, c_air, false)
+        } else if riemann {
             let vdotr = (vyi - vyj) * dy + (vzi - pt.vz[j]) * dz;
             riemann::pressure_sum(p_i, pt.p[j], rho_i, pt.rho[j], vdotr, e.r, c0, false)
         } else {

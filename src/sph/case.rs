@@ -31,6 +31,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
 
+use crate::sph::air::{self, AirChoice, AirLayer};
 use crate::sph::automatic;
 use crate::sph::body::{Motion, Section};
 use crate::sph::eos::EosKind;
@@ -210,6 +211,9 @@ pub struct Setup {
     /// [`crate::sph::refinement`]); `None` for one resolution throughout.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub refinement: Option<Band>,
+    /// Air as a second phase ([`crate::sph::air`]); `None` for water only.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub air: Option<AirLayer>,
     pub sensors: Vec<SensorSpec>,
     /// Time between particle snapshots (VTK/PNG); `None` for none.
     #[serde(rename = "snapshot_interval_s")]
@@ -268,6 +272,8 @@ pub struct Overrides {
     /// A refined tank: base resolution in a band around the body, 2 dp beyond (None: the default,
     /// refined with an automatic tank and the Riemann scheme, else uniform).
     pub refinement: Option<bool>,
+    /// Air as a second phase (None: off).
+    pub air: Option<AirChoice>,
 }
 
 /// Whether particle shifting is on unless a case says otherwise.
@@ -424,6 +430,7 @@ pub fn resolve(
                 .into(),
         );
     }
+    let air = resolve_air(section, o, &refinement, keel_depth_end, d0, dp, &mut notes);
     let setup = Setup {
         name: name.to_string(),
         section_points: Some(section.half_points().to_vec()),
@@ -450,6 +457,7 @@ pub fn resolve(
         t_end,
         initial_immersion: d0,
         refinement,
+        air,
         sensors,
         snapshot_interval: o.snapshot_interval,
         filter_cutoff_hz: o.filter_cutoff_hz,
@@ -457,6 +465,65 @@ pub fn resolve(
     };
     check(&setup)?;
     Ok(setup)
+}
+
+/// The air layer of a run, by the `air` choice: none when off; when on (or auto and the deadrise is
+/// low, [`air::auto_needs_air`], within the expected wetted half-width: the half-breadth at the keel's
+/// deepest immersion, times pi/2 for the water's rise, Wagner 1932), a layer of standard air over the
+/// calm surface as wide as the band of base resolution (the refined tank's, or 1.5 half-breadths without
+/// one) and as high as the section above the water at the start, plus a kernel support.
+fn resolve_air(
+    section: &Section,
+    o: &Overrides,
+    refinement: &Option<Band>,
+    keel_depth_end: f64,
+    d0: f64,
+    dp: f64,
+    notes: &mut Vec<String>,
+) -> Option<AirLayer> {
+    let on = match o.air.unwrap_or_default() {
+        AirChoice::Off => return None,
+        AirChoice::On => {
+            notes.push("air: on (given)".into());
+            true
+        }
+        AirChoice::Auto => {
+            let wetted = (std::f64::consts::FRAC_PI_2 * section.half_breadth_at(keel_depth_end))
+                .min(section.half_breadth());
+            let (on, why) = air::auto_needs_air(section.half_points(), wetted.max(dp));
+            notes.push(why);
+            on
+        }
+    };
+    if !on {
+        return None;
+    }
+    let half_width = refinement
+        .as_ref()
+        .map_or(1.5 * section.half_breadth(), |b| b.half_width);
+    let clearance = if d0 > 0.0 {
+        0.0
+    } else {
+        air::CLEARANCE_DP * dp
+    };
+    let height = (section.height() - d0).max(0.0) + clearance + 3.0 * dp;
+    let layer = AirLayer::standard(half_width, height, clearance);
+    let phase = layer.phase();
+    notes.push(format!(
+        "air layer: {half_width:.3} m half-width, {height:.3} m over the calm surface (the section's height above \
+         the water at the start, its clearance and 3 dp); standard air, {:.3} kg/m3, {:.0} Pa, gamma {}, sound \
+         speed {:.0} m/s (the time step follows the larger of it and c0)",
+        phase.rho0, phase.p_atm, phase.gamma, phase.c
+    ));
+    if clearance > 0.0 {
+        notes.push(format!(
+            "air gap: the keel starts {:.2} mm ({} dp) above the calm surface and closes it at the entry speed \
+             before t = 0, the instant it reaches the calm surface (the run's records start at negative times)",
+            clearance * 1e3,
+            air::CLEARANCE_DP
+        ));
+    }
+    Some(layer)
 }
 
 /// Sanity checks on a resolved setup (catches overrides that cannot work).
@@ -549,6 +616,64 @@ pub fn check(s: &Setup) -> Result<()> {
             return Err(Error::Invalid(format!(
                 "the refined band ({:.3} m half-width, {:.3} m deep) must lie inside the tank ({:.3} m, {:.3} m)",
                 band.half_width, band.depth, s.tank_half_width, s.tank_depth
+            )));
+        }
+    }
+    if let Some(a) = &s.air {
+        if !s.riemann {
+            return Err(Error::Invalid(
+                "a run with air needs the Riemann scheme (riemann = true): its pair terms between the phases \
+                 are the two-phase Riemann solver"
+                    .into(),
+            ));
+        }
+        if s.shifting || s.divergence_correction {
+            return Err(Error::Invalid(
+                "a run with air takes neither particle shifting nor the corrected divergence (not built for \
+                 two phases); leave shifting and divergence_correction off"
+                    .into(),
+            ));
+        }
+        if !(a.clearance.is_finite() && a.clearance >= 0.0) {
+            return Err(Error::Invalid(format!(
+                "the air gap under the keel must be at least 0 m, got {} m",
+                a.clearance
+            )));
+        }
+        if a.clearance > 0.0 && s.initial_immersion > 0.0 {
+            return Err(Error::Invalid(
+                "a section that starts immersed has no air gap under its keel (clearance 0)".into(),
+            ));
+        }
+        for (what, v) in [
+            ("air density", a.rho0),
+            ("atmospheric pressure", a.p_atm),
+            ("air layer half-width", a.half_width),
+            ("air layer height", a.height),
+        ] {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(bad(what, v));
+            }
+        }
+        if !(a.gamma.is_finite() && a.gamma >= 1.0) {
+            return Err(Error::Invalid(format!(
+                "the air's ratio of specific heats must be at least 1, got {}",
+                a.gamma
+            )));
+        }
+        if let Some(band) = &s.refinement
+            && a.half_width > band.half_width + 1e-12
+        {
+            return Err(Error::Invalid(format!(
+                "the air layer ({:.3} m half-width) must lie inside the refined band ({:.3} m): air is at the base \
+                 spacing only",
+                a.half_width, band.half_width
+            )));
+        }
+        if a.half_width > s.tank_half_width {
+            return Err(Error::Invalid(format!(
+                "the air layer ({:.3} m half-width) must lie inside the tank ({:.3} m)",
+                a.half_width, s.tank_half_width
             )));
         }
     }

@@ -10,6 +10,7 @@ use toml::Spanned;
 
 use crate::error::{Error, Result};
 use crate::input::{SourceText, positive};
+use crate::sph::air::AirChoice;
 use crate::sph::body::Section;
 use crate::sph::case::{ForceMethod, Level, MotionSpec, Overrides, SensorMethod, Setup, resolve};
 use crate::sph::eos::EosKind;
@@ -89,6 +90,8 @@ struct NumericsFile {
     force: Option<ForceMethod>,
     sensor_method: Option<SensorMethod>,
     mirror: Option<bool>,
+    /// Air as a second phase: "on", "off" (the default) or "auto".
+    air: Option<AirChoice>,
 }
 
 #[derive(Debug, Default, Deserialize)]
@@ -308,6 +311,7 @@ pub fn from_source(src: &SourceText) -> Result<Setup> {
         });
     }
     let o = Overrides {
+        air: f.numerics.air,
         initial_immersion: None,
         refinement: f.tank.refined,
         level: f.resolution.level,

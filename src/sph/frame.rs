@@ -121,6 +121,8 @@ pub fn render_png(pt: &Particles, f: &Frame) -> Result<Vec<u8>> {
             Kind::Fluid => colour(pt.p[i] / f.p_scale),
             Kind::Body => [150, 150, 150],
             Kind::Wall => [64, 64, 64],
+            // Air: pale blue-grey, so that the cushion and the escaping air show beside the water.
+            Kind::Air => [205, 215, 230],
         };
         plot(pt.y[i], pt.z[i], c);
         if f.mirror {

@@ -31,7 +31,7 @@ pub fn kick(pt: &mut Particles, dt: f64) {
         .into_par_iter()
         .with_min_len(4096)
         .for_each(|(vy, vz, kind, r)| {
-            if *kind == Kind::Fluid {
+            if kind.is_fluid() {
                 *vy += hdt * r[0];
                 *vz += hdt * r[1];
             }
@@ -53,7 +53,7 @@ pub fn drift(pt: &mut Particles, dt: f64, mirror: bool) {
         .into_par_iter()
         .with_min_len(4096)
         .for_each(|(y, z, vy, vz, rho, kind, r)| {
-            if *kind != Kind::Fluid {
+            if !kind.is_fluid() {
                 return;
             }
             *rho += dt * r[2];
@@ -87,7 +87,7 @@ pub fn move_body(pt: &mut Particles, dy: f64, dz: f64, vel: [f64; 2]) {
         });
 }
 
-/// Largest fluid speed and acceleration magnitude. NaN if any fluid particle has a non-finite state
+/// Largest fluid (water or air) speed and acceleration magnitude. NaN if any fluid particle has a non-finite state
 /// (max is exact, so the result does not depend on the thread count).
 pub fn max_speed_accel(pt: &Particles) -> (f64, f64) {
     let (v2, a2) = (
@@ -99,7 +99,7 @@ pub fn max_speed_accel(pt: &Particles) -> (f64, f64) {
         .into_par_iter()
         .with_min_len(4096)
         .map(|(vy, vz, r, k)| {
-            if *k != Kind::Fluid {
+            if !k.is_fluid() {
                 return (0.0, 0.0);
             }
             let v2 = vy * vy + vz * vz;

@@ -319,6 +319,12 @@ fn stage_setup(
         mirror: Some(main.mirror),
         t_end: Some(t_end),
         refinement: Some(main.refinement.is_some()),
+        // A stage of a run with air has air too (its own layer over the sub-section).
+        air: Some(if main.air.is_some() {
+            crate::sph::air::AirChoice::On
+        } else {
+            crate::sph::air::AirChoice::Off
+        }),
         ..Overrides::default()
     };
     let motion = main.motion.as_ref().expect("a section run has a motion");

@@ -309,7 +309,7 @@ impl<'a> ListsAt<'a> {
     pub fn of(&self, c: usize, k: usize, i: usize) -> impl Iterator<Item = ListEntry> + 'a {
         let (yi, zi, li) = (self.y[i], self.z[i], self.level[i]);
         let (y, z, level, kernel) = (self.y, self.z, self.level, self.kernel);
-        debug_assert!(self.kind[i] == Kind::Fluid || self.lists.chunks[c].tags(k).is_empty());
+        debug_assert!(self.kind[i].is_fluid() || self.lists.chunks[c].tags(k).is_empty());
         self.lists.chunks[c].tags(k).iter().map(move |&t| {
             let (j, mirrored) = neighbour(t);
             let dz = zi - z[j];

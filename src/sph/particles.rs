@@ -13,6 +13,16 @@ pub enum Kind {
     Wall = 1,
     /// Dummy particle of the moving body.
     Body = 2,
+    /// Air ([`crate::sph::air`]): a fluid particle of the second phase.
+    Air = 3,
+}
+
+impl Kind {
+    /// Whether the particle is integrated in time (water or air), not a dummy.
+    #[inline(always)]
+    pub fn is_fluid(self) -> bool {
+        matches!(self, Kind::Fluid | Kind::Air)
+    }
 }
 
 /// All particles of a run. Position and velocity components are (y, z) in the 2D water-entry frame.

@@ -61,11 +61,14 @@ impl<'a> RunPhases<'a> {
         d0: f64,
         transient_end_s: f64,
     ) -> Self {
+        // From the keel's arrival at the calm surface (t = 0) on: a run with an air gap records the
+        // approach at negative times.
+        let k0 = history.t.partition_point(|&t| t < 0.0);
         let wagner = generalised_wagner::estimate_immersed(
             section.half_points(),
             d0,
-            &history.t,
-            &history.v_down,
+            &history.t[k0..],
+            &history.v_down[k0..],
             rho,
         )
         .ok()

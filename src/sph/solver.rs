@@ -27,6 +27,7 @@
 use rayon::prelude::*;
 
 use crate::error::{Error, Result};
+use crate::sph::air::AirPhase;
 use crate::sph::body::{self, ContourPoint, Motion, Section};
 use crate::sph::body_force;
 use crate::sph::boundary::{adami2012, kruisbrink2018};
@@ -43,6 +44,7 @@ use crate::sph::refinement::{self, PairKernels};
 use crate::sph::sensors::{History, SensorSet};
 use crate::sph::shifting::Shifting;
 use crate::sph::tank::Tank;
+use crate::sph::two_phase_pass;
 
 /// Fraction of full support (Shepard sum of a fully wetted flat wall is about 1/2) below which a wall
 /// point counts as dry and gets zero pressure.
@@ -74,6 +76,8 @@ pub struct Simulation {
     pub setup: Setup,
     pub kernel: WendlandC2,
     pub eos: Eos,
+    /// The air of a two-phase run ([`crate::sph::air`]).
+    pub air: Option<AirPhase>,
     /// Volume of a dummy particle, dp^2 (m^2).
     pub dummy_vol: f64,
     pub pt: Particles,
@@ -150,21 +154,34 @@ impl Simulation {
             None if d0 > 0.0 => tank.fill_where(&mut pt, dp, layers, mirror, &eos, setup.g, &keep),
             None => tank.fill(&mut pt, dp, layers, mirror, &eos, setup.g),
         }
+        // With air, a keel entry starts with the keel `clearance` above the calm surface, at the time
+        // t = -clearance / V0 (t = 0 stays the instant it reaches the calm surface).
+        let clearance = setup.air.map_or(0.0, |a| a.clearance);
+        let z0 = clearance - d0;
         let mut body = BodyState {
-            z_keel: -d0,
+            z_keel: z0,
             ..BodyState::default()
         };
+        let mut t0 = 0.0;
         let mut contour = Vec::new();
         if let (Some(sec), Some(mot)) = (&section, &motion) {
             let v0 = mot.initial_speed();
             body.v_down = v0;
             body.a_down = mot.accel_at(0.0).unwrap_or(setup.g);
+            if clearance > 0.0 {
+                if v0.is_nan() || v0 <= 0.0 {
+                    return Err(Error::Invalid(format!(
+                        "a run with an air gap under the keel needs a downward speed at the start, got {v0} m/s"
+                    )));
+                }
+                t0 = -clearance / v0;
+            }
             let y_min = if mirror { 0.25 * dp } else { f64::NEG_INFINITY };
             for p in body::dummy_points(sec, dp, layers, y_min) {
                 pt.push(
                     Kind::Body,
                     p[0],
-                    p[1] - d0,
+                    p[1] + z0,
                     0.0,
                     -v0,
                     setup.rho0,
@@ -173,6 +190,23 @@ impl Simulation {
                 );
             }
             contour = body::contour_points(sec, 0.5 * dp, !mirror);
+        }
+        let air = setup.air.map(|a| a.phase());
+        if let Some(layer) = &setup.air {
+            fill_air(
+                &mut pt,
+                layer,
+                dp,
+                mirror,
+                setup.g,
+                &|y, z| match &section {
+                    Some(sec) => {
+                        !sec.contains(y, z - z0)
+                            && body::distance_to_polyline(sec.full_contour(), y, z - z0) >= 0.5 * dp
+                    }
+                    None => true,
+                },
+            );
         }
         let sensors = SensorSet::new(&setup.sensors, section.as_ref(), dp)?;
         // Wall layers are 2 dp thick each in a refined tank.
@@ -200,6 +234,7 @@ impl Simulation {
             dummy_vol: dp * dp,
             kernel,
             eos,
+            air,
             pt,
             grid,
             lists: NeighbourLists::default(),
@@ -215,7 +250,7 @@ impl Simulation {
             shifting: Shifting::default(),
             damping: DampingZone::new(tank.half_width, tank.depth, setup.damping_zone, setup.c0),
             body,
-            time: 0.0,
+            time: t0,
             dt: 0.0,
             dt_first: 0.0,
             steps: 0,
@@ -231,16 +266,27 @@ impl Simulation {
         sim.dt_first = integrator::time_step(
             sim.setup.cfl,
             h,
-            sim.setup.c0,
+            sim.sound_speed(),
             v.max(sim.body.v_down.abs()),
             a,
         );
         Ok(sim)
     }
 
-    /// Number of fluid particles.
+    /// Number of water particles.
     pub fn n_fluid(&self) -> usize {
         self.pt.count(Kind::Fluid)
+    }
+
+    /// Number of air particles.
+    pub fn n_air(&self) -> usize {
+        self.pt.count(Kind::Air)
+    }
+
+    /// The largest sound speed of the run's phases: the water's c0, or the air's where it is larger
+    /// (the acoustic time-step limit).
+    pub fn sound_speed(&self) -> f64 {
+        self.air.map_or(self.setup.c0, |a| a.c.max(self.setup.c0))
     }
 
     /// The section, when there is a body.
@@ -277,8 +323,14 @@ impl Simulation {
         let (lists, kernel) = (&self.lists, &self.kernel);
         let pt = &mut self.pt;
         let s = &self.setup;
-        self.counters
-            .time(Stage::Continuity, || continuity_rates(lists, pt, kernel, s));
+        match &self.air {
+            Some(air) => self.counters.time(Stage::Continuity, || {
+                two_phase_pass::continuity_rates(lists, pt, s, air)
+            }),
+            None => self
+                .counters
+                .time(Stage::Continuity, || continuity_rates(lists, pt, kernel, s)),
+        }
         self.lists_fresh = false;
     }
 
@@ -294,13 +346,15 @@ impl Simulation {
         );
         let acc = [0.0, -self.body.a_down];
         let pt = &mut self.pt;
+        let air = self.air.as_ref();
         self.counters.time(Stage::Boundary, || {
-            adami2012::update_pressures(grid, pt, kernel, eos, vol, g, acc)
+            adami2012::update_pressures(grid, pt, kernel, eos, air, vol, g, acc)
         });
         let s = &self.setup;
         let lists = &mut self.lists;
-        let n = self.counters.time(Stage::Momentum, || {
-            momentum_rates(grid, lists, pt, kernel, s)
+        let n = self.counters.time(Stage::Momentum, || match air {
+            Some(a) => two_phase_pass::momentum_rates(grid, lists, pt, kernel, s, a),
+            None => momentum_rates(grid, lists, pt, kernel, s),
         });
         self.counters.interactions += n;
         self.lists_fresh = true;
@@ -321,11 +375,14 @@ impl Simulation {
         let zk = self.body.z_keel;
         let (grid, pt, kernel, eos, g) =
             (&self.grid, &self.pt, &self.kernel, &self.eos, self.setup.g);
+        let air = self.air.as_ref();
         let pairs = pt.multi_resolution().then(|| PairKernels::new(kernel.h()));
         let sample = |y: f64, z: f64| {
             let (p, shepard) = match &pairs {
-                Some(k) => adami2012::wall_pressure_at_level(grid, pt, k, 0, eos, g, y, z, acc),
-                None => adami2012::wall_pressure(grid, pt, kernel, eos, g, y, z, acc),
+                Some(k) => {
+                    adami2012::wall_pressure_at_level(grid, pt, k, 0, eos, air, g, y, z, acc)
+                }
+                None => adami2012::wall_pressure(grid, pt, kernel, eos, air, g, y, z, acc),
             };
             if shepard < DRY_SHEPARD { 0.0 } else { p }
         };
@@ -368,6 +425,7 @@ impl Simulation {
                 &self.pt,
                 s.riemann,
                 s.c0,
+                self.air.as_ref(),
                 s.mirror,
                 z_range,
                 (s.force == ForceMethod::NormalPairForces).then_some((&self.wall_normals, zk)),
@@ -388,6 +446,7 @@ impl Simulation {
                     &self.pt,
                     s.riemann,
                     s.c0,
+                    self.air.as_ref(),
                     zk,
                     &self.sensors,
                     &mut self.force_scratch,
@@ -414,16 +473,20 @@ impl Simulation {
         let dt = integrator::time_step(
             self.setup.cfl,
             h,
-            self.setup.c0,
+            self.sound_speed(),
             v_max.max(self.body.v_down.abs()),
             a_max,
         );
         if dt < 1e-3 * self.dt_first {
-            let at = self.fastest_fluid_particle();
+            let (at, kind) = self.fastest_fluid_particle();
             return Err(format!(
-                "time step collapsed to {dt:.3e} s (first step {:.3e} s): largest fluid speed {v_max:.3} m/s at \
-                 (y, z) = ({:.4}, {:.4}) m (keel at z = {:.4} m), largest acceleration {a_max:.3e} m/s^2",
-                self.dt_first, at[0], at[1], self.body.z_keel
+                "time step collapsed to {dt:.3e} s (first step {:.3e} s): largest fluid speed {v_max:.3} m/s, {} \
+                 particle at (y, z) = ({:.4}, {:.4}) m (keel at z = {:.4} m), largest acceleration {a_max:.3e} m/s^2",
+                self.dt_first,
+                kind_name(kind),
+                at[0],
+                at[1],
+                self.body.z_keel
             ));
         }
         self.dt = dt;
@@ -521,18 +584,18 @@ impl Simulation {
         Ok(())
     }
 
-    /// Position of the fastest fluid particle (the first of equals, in storage order).
-    fn fastest_fluid_particle(&self) -> [f64; 2] {
-        let mut best = (f64::NEG_INFINITY, [0.0; 2]);
+    /// Position and kind of the fastest fluid particle (the first of equals, in storage order).
+    fn fastest_fluid_particle(&self) -> ([f64; 2], Kind) {
+        let mut best = (f64::NEG_INFINITY, [0.0; 2], Kind::Fluid);
         for i in 0..self.pt.len() {
-            if self.pt.kind[i] == Kind::Fluid {
+            if self.pt.kind[i].is_fluid() {
                 let v2 = self.pt.vy[i] * self.pt.vy[i] + self.pt.vz[i] * self.pt.vz[i];
                 if v2 > best.0 {
-                    best = (v2, [self.pt.y[i], self.pt.z[i]]);
+                    best = (v2, [self.pt.y[i], self.pt.z[i]], self.pt.kind[i]);
                 }
             }
         }
-        best.1
+        (best.1, best.2)
     }
 
     fn nan_diagnostic(&self) -> String {
@@ -552,11 +615,7 @@ impl Simulation {
                      velocity ({:.3}, {:.3}) m/s, density {:.3} kg/m3",
                     self.time,
                     self.steps,
-                    match self.pt.kind[i] {
-                        crate::sph::particles::Kind::Fluid => "water",
-                        crate::sph::particles::Kind::Wall => "tank-wall",
-                        crate::sph::particles::Kind::Body => "body",
-                    },
+                    kind_name(self.pt.kind[i]),
                     self.pt.y[i],
                     self.pt.z[i],
                     self.pt.vy[i],
@@ -622,6 +681,7 @@ impl Simulation {
             &self.pt,
             &self.kernel,
             &self.eos,
+            None,
             self.setup.g,
             y,
             z,
@@ -638,5 +698,45 @@ impl Simulation {
     /// An error for a failed run, naming the time and the reason.
     pub fn failure(&self, why: &str) -> Error {
         Error::Numerical(format!("SPH run stopped at t = {:.6} s: {why}", self.time))
+    }
+}
+
+/// What a particle of `kind` is, in a diagnostic.
+fn kind_name(kind: Kind) -> &'static str {
+    match kind {
+        Kind::Fluid => "water",
+        Kind::Wall => "tank-wall",
+        Kind::Body => "body",
+        Kind::Air => "air",
+    }
+}
+
+/// Fill the air layer of a two-phase run ([`crate::sph::air`]): air at rest on the water's lattice
+/// (spacing `dp`, cells centred at (i + 1/2) dp) above the calm surface, |y| < the layer's half-width and
+/// z < its height, where `keep(y, z)` (outside the body and dp/2 clear of its contour). The pressure is
+/// the air's hydrostatic one, zero (atmospheric) at the top of the layer: p = rho_a g (H - z), a few
+/// pascals.
+fn fill_air(
+    pt: &mut Particles,
+    layer: &crate::sph::air::AirLayer,
+    dp: f64,
+    mirror: bool,
+    g: f64,
+    keep: &dyn Fn(f64, f64) -> bool,
+) {
+    let air = layer.phase();
+    let ny = (layer.half_width / dp).floor() as i64;
+    let nz = (layer.height / dp).floor() as i64;
+    let y_start = if mirror { 0 } else { -ny };
+    for kz in 0..nz {
+        let z = (kz as f64 + 0.5) * dp;
+        let p = air.rho0 * g * (layer.height - z);
+        let rho = air.density(p);
+        for iy in y_start..ny {
+            let y = (iy as f64 + 0.5) * dp;
+            if keep(y, z) {
+                pt.push(Kind::Air, y, z, 0.0, 0.0, rho, p, dp * dp);
+            }
+        }
     }
 }

@@ -22,7 +22,7 @@
 use rayon::prelude::*;
 
 use crate::sph::body::{Section, nearest_on_polyline};
-use crate::sph::particles::{Kind, Particles};
+use crate::sph::particles::Particles;
 
 /// Outcome of one collision pass.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
@@ -61,11 +61,7 @@ pub fn resolve(
         .with_min_len(4096)
         .map(|(y, z, vy, vz, kind)| {
             let zb = *z - z_keel;
-            if *kind != Kind::Fluid
-                || y.abs() > hb
-                || zb < 0.0
-                || zb > ht
-                || !section.contains(*y, zb)
+            if !kind.is_fluid() || y.abs() > hb || zb < 0.0 || zb > ht || !section.contains(*y, zb)
             {
                 return Collisions::default();
             }
@@ -115,7 +111,16 @@ mod tests {
 
     fn one_fluid(y: f64, z: f64, vy: f64, vz: f64) -> Particles {
         let mut pt = Particles::default();
-        pt.push(Kind::Fluid, y, z, vy, vz, 1000.0, 0.0, 1e-4);
+        pt.push(
+            crate::sph::particles::Kind::Fluid,
+            y,
+            z,
+            vy,
+            vz,
+            1000.0,
+            0.0,
+            1e-4,
+        );
         pt
     }
 
