@@ -316,7 +316,11 @@ mod tests {
         let g = interface_continuity_term(State { p: 5000.0, ..gas }, water, vdotr, r, fv, 0.0);
         // Weight 2 Z_water / (Z_water + Z_air): 1.986 at c0 = 60 m/s.
         let (zw, za) = (water.rho * water.c, gas.rho * gas.c);
-        assert!((g / vdotr - 2.0 * zw / (zw + za)).abs() < 1e-12, "{}", g / vdotr);
+        assert!(
+            (g / vdotr - 2.0 * zw / (zw + za)).abs() < 1e-12,
+            "{}",
+            g / vdotr
+        );
         assert!(g / vdotr > 1.98);
     }
 

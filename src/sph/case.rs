@@ -274,6 +274,9 @@ pub struct Overrides {
     pub refinement: Option<bool>,
     /// Air as a second phase (None: off).
     pub air: Option<AirChoice>,
+    /// The air gap under the keel at the start of a keel entry with air (m; None: [`air::CLEARANCE_DP`]
+    /// spacings).
+    pub air_gap: Option<f64>,
 }
 
 /// Whether particle shifting is on unless a case says otherwise.
@@ -501,10 +504,13 @@ fn resolve_air(
     let half_width = refinement
         .as_ref()
         .map_or(1.5 * section.half_breadth(), |b| b.half_width);
-    let clearance = if d0 > 0.0 {
-        0.0
-    } else {
-        air::CLEARANCE_DP * dp
+    let clearance = match o.air_gap {
+        _ if d0 > 0.0 => 0.0,
+        Some(g) => {
+            notes.push(format!("air gap under the keel {:.2} mm (given)", g * 1e3));
+            g
+        }
+        None => air::CLEARANCE_DP * dp,
     };
     let height = (section.height() - d0).max(0.0) + clearance + 3.0 * dp;
     let layer = AirLayer::standard(half_width, height, clearance);
@@ -517,10 +523,10 @@ fn resolve_air(
     ));
     if clearance > 0.0 {
         notes.push(format!(
-            "air gap: the keel starts {:.2} mm ({} dp) above the calm surface and closes it at the entry speed \
+            "air gap: the keel starts {:.2} mm ({:.1} dp) above the calm surface and closes it at the entry speed \
              before t = 0, the instant it reaches the calm surface (the run's records start at negative times)",
             clearance * 1e3,
-            air::CLEARANCE_DP
+            clearance / dp
         ));
     }
     Some(layer)

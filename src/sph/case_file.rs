@@ -92,6 +92,8 @@ struct NumericsFile {
     mirror: Option<bool>,
     /// Air as a second phase: "on", "off" (the default) or "auto".
     air: Option<AirChoice>,
+    /// The air gap under the keel at the start of a run with air (m; default 4 particle spacings).
+    air_gap_m: Option<Spanned<f64>>,
 }
 
 #[derive(Debug, Default, Deserialize)]
@@ -312,6 +314,10 @@ pub fn from_source(src: &SourceText) -> Result<Setup> {
     }
     let o = Overrides {
         air: f.numerics.air,
+        air_gap: match &f.numerics.air_gap_m {
+            Some(v) => Some(crate::input::in_range(src, v, 0.0, 10.0, "air_gap_m")?),
+            None => None,
+        },
         initial_immersion: None,
         refinement: f.tank.refined,
         level: f.resolution.level,
