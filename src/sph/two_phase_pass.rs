@@ -53,6 +53,24 @@ impl Phases {
             (self.c0, self.rho0)
         }
     }
+
+    /// The two sides of the Riemann problem of particle i (pressure `p_i`, density `rho_i`, sound speed
+    /// `c_i`) and its neighbour `q` of another phase.
+    #[inline(always)]
+    fn sides(&self, p_i: f64, rho_i: f64, c_i: f64, q: &Pair) -> (State, State) {
+        (
+            State {
+                p: p_i,
+                rho: rho_i,
+                c: c_i,
+            },
+            State {
+                p: q.p,
+                rho: q.rho,
+                c: self.of(q.kind).0,
+            },
+        )
+    }
 }
 
 /// One neighbour of particle i: the offset r_i - r_j, the velocity difference and the state of j.
@@ -108,22 +126,9 @@ fn pressure_sum(ph: &Phases, ki: Kind, p_i: f64, rho_i: f64, q: &Pair) -> f64 {
             }
         }
         kj if kj == ki => riemann::pressure_sum(p_i, q.p, rho_i, q.rho, q.vdotr, q.r, ci, true),
-        kj => {
-            let (cj, _) = ph.of(kj);
-            air::interface_pressure_sum(
-                State {
-                    p: p_i,
-                    rho: rho_i,
-                    c: ci,
-                },
-                State {
-                    p: q.p,
-                    rho: q.rho,
-                    c: cj,
-                },
-                q.vdotr,
-                q.r,
-            )
+        _ => {
+            let (i, j) = ph.sides(p_i, rho_i, ci, q);
+            air::interface_pressure_sum(i, j, q.vdotr, q.r)
         }
     }
 }
@@ -263,22 +268,10 @@ pub fn continuity_rates(lists: &NeighbourLists, pt: &mut Particles, s: &Setup, a
                             // The water's density does not take the air's flux: for it the air is a
                             // free surface (see `crate::sph::air`, measured on a 30 deg wedge).
                             _ if ki == Kind::Fluid => 0.0,
-                            kj => air::interface_continuity_term(
-                                State {
-                                    p: p_i,
-                                    rho: rho_i,
-                                    c: ci,
-                                },
-                                State {
-                                    p: q.p,
-                                    rho: q.rho,
-                                    c: ph.of(kj).0,
-                                },
-                                q.vdotr,
-                                q.r,
-                                fw,
-                                dp_hydro,
-                            ),
+                            _ => {
+                                let (i, j) = ph.sides(p_i, rho_i, ci, &q);
+                                air::interface_continuity_term(i, j, q.vdotr, q.r, fw, dp_hydro)
+                            }
                         };
                     }
                     out[2] = rho_i * sum;
