@@ -226,3 +226,21 @@ fn air_refuses_schemes_it_is_not_built_for() {
     let e = sph::case::check(&setup).unwrap_err().to_string();
     assert!(e.contains("Riemann"), "{e}");
 }
+
+#[test]
+fn a_gap_without_air_is_an_error_with_its_place() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("gap.toml");
+    std::fs::write(
+        &path,
+        "name = \"g\"\n[section]\nwedge = { deadrise_deg = 30.0, half_beam_m = 0.25 }\n[motion]\n\
+         kind = \"constant\"\nspeed_m_s = 5.0\n[numerics]\nair_gap_m = 0.02\n",
+    )
+    .unwrap();
+    let e = sph::case::from_file(&path).unwrap_err().to_string();
+    assert!(e.contains("gap.toml:8:") && e.contains("air is off"), "{e}");
+    let with_air = std::fs::read_to_string(&path).unwrap() + "air = \"on\"\n";
+    std::fs::write(&path, with_air).unwrap();
+    let s = sph::case::from_file(&path).unwrap();
+    assert_eq!(s.air.unwrap().clearance, 0.02);
+}

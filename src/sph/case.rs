@@ -433,7 +433,7 @@ pub fn resolve(
                 .into(),
         );
     }
-    let air = resolve_air(section, o, &refinement, keel_depth_end, d0, dp, &mut notes);
+    let air = resolve_air(section, o, &refinement, keel_depth_end, d0, dp, &mut notes)?;
     let setup = Setup {
         name: name.to_string(),
         section_points: Some(section.half_points().to_vec()),
@@ -483,9 +483,16 @@ fn resolve_air(
     d0: f64,
     dp: f64,
     notes: &mut Vec<String>,
-) -> Option<AirLayer> {
+) -> Result<Option<AirLayer>> {
     let on = match o.air.unwrap_or_default() {
-        AirChoice::Off => return None,
+        AirChoice::Off if o.air_gap.is_some() => {
+            return Err(Error::Invalid(
+                "an air gap under the keel is given (air_gap_m) but air is off: set air = \"on\" or \"auto\", \
+                 or leave the gap out"
+                    .into(),
+            ));
+        }
+        AirChoice::Off => return Ok(None),
         AirChoice::On => {
             notes.push("air: on (given)".into());
             true
@@ -499,7 +506,7 @@ fn resolve_air(
         }
     };
     if !on {
-        return None;
+        return Ok(None);
     }
     let half_width = refinement
         .as_ref()
@@ -529,7 +536,7 @@ fn resolve_air(
             clearance / dp
         ));
     }
-    Some(layer)
+    Ok(Some(layer))
 }
 
 /// Sanity checks on a resolved setup (catches overrides that cannot work).

@@ -315,6 +315,14 @@ pub fn from_source(src: &SourceText) -> Result<Setup> {
     let o = Overrides {
         air: f.numerics.air,
         air_gap: match &f.numerics.air_gap_m {
+            Some(v) if !matches!(f.numerics.air, Some(AirChoice::On | AirChoice::Auto)) => {
+                return Err(src
+                    .error(
+                        v,
+                        "air_gap_m is given but air is off: set air = \"on\" or \"auto\", or leave the gap out",
+                    )
+                    .into());
+            }
             Some(v) => Some(crate::input::in_range(src, v, 0.0, 10.0, "air_gap_m")?),
             None => None,
         },
