@@ -5,8 +5,8 @@
 //!   impulse within 2 %, force-panel sensors below 60 % of the side within 5 %). At the 20 particles
 //!   per half-beam of this check a sensor at 20 % of the side peaks inside the contact transient (keel
 //!   less than 2 dp deep), which the tool does not report as a slamming peak, so the sensors sit at 35-55 %
-//!   (measured at 20 %: 5.5 % lower with air, the keel meeting the water through the air gap; at 35-60 %:
-//!   0.2-1.3 %; peak force 0.3 %, impulse 0.9 %).
+//!   (measured at 20 %: 6.5 % lower with air, the keel meeting the water through the air gap; at 35-55 %:
+//!   -2.0 to +0.4 %; peak force -2.5 %, impulse -0.9 %).
 //! * A flat bottom: with air the keel's impact is cushioned (the contact force peak well below the
 //!   water-only one, and a force that builds up before the keel reaches the calm surface).
 //! * Determinism: bit-identical histories on 1 and 2 threads.

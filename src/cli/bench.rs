@@ -13,8 +13,7 @@ use super::global::{self, JsonArg};
 pub const EXAMPLES: &str = "\
 Examples:
   slamtool bench --steps 50 --particles 20000
-  slamtool bench --tank refined --threads-scan
-  slamtool bench --air --steps 100
+  slamtool bench --tank refined --threads-scan --air
   RAYON_NUM_THREADS=1 slamtool bench --json";
 
 /// The tank of the benchmark.
