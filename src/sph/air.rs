@@ -98,6 +98,13 @@ pub enum AirChoice {
 /// meets the water (the air cushion forms in that approach; Verhagen 1967).
 pub const CLEARANCE_DP: f64 = 4.0;
 
+/// The air gap under a flat keel, as a fraction of the flat's half-width (the default gap is the larger
+/// of this and [`CLEARANCE_DP`] spacings). Measured on a flat bottom of 0.2 m half-width at 2 m/s
+/// (docs/guide/air.md): the impact's force peak was 41.7, 31.2 and 33.3 kN/m with gaps of 0.125, 0.25
+/// and 0.5 half-widths at 6.25 mm spacing, and 34.6, 31.2 and 31.1 kN/m at 12.5, 6.25 and 3.125 mm with
+/// 0.25: from a quarter of the half-width the gap no longer sets the cushion.
+pub const FLAT_GAP_FRACTION: f64 = 0.25;
+
 /// The deadrise below which `--air auto` runs with air (deg): the lower end of the 15-20 deg below
 /// which an air cushion forms (Veen 2010, ch. 5; Chuang 1966 measured it for wedges up to 15 deg).
 pub const AUTO_DEADRISE_DEG: f64 = 15.0;

@@ -517,7 +517,7 @@ fn resolve_air(
             notes.push(format!("air gap under the keel {:.2} mm (given)", g * 1e3));
             g
         }
-        None => air::CLEARANCE_DP * dp,
+        None => (air::CLEARANCE_DP * dp).max(air::FLAT_GAP_FRACTION * section.half_breadth_at(0.0)),
     };
     let height = (section.height() - d0).max(0.0) + clearance + 3.0 * dp;
     let layer = AirLayer::standard(half_width, height, clearance);
@@ -531,9 +531,12 @@ fn resolve_air(
     if clearance > 0.0 {
         notes.push(format!(
             "air gap: the keel starts {:.2} mm ({:.1} dp) above the calm surface and closes it at the entry speed \
-             before t = 0, the instant it reaches the calm surface (the run's records start at negative times)",
+             before t = 0, the instant it reaches the calm surface (the run's records start at negative times); \
+             by default the larger of {} dp and {} of the flat keel's half-width",
             clearance * 1e3,
-            clearance / dp
+            clearance / dp,
+            air::CLEARANCE_DP,
+            air::FLAT_GAP_FRACTION
         ));
     }
     Ok(Some(layer))
