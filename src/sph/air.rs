@@ -214,6 +214,14 @@ impl AirPhase {
     }
 }
 
+/// 2 P* of an air particle i (pressure `p_i`, density `rho_i`, sound speed `c`) with a wall or body
+/// dummy, for the momentum sum and the body force: the air's own pressure as the wall's and the mirrored
+/// wall velocity (see the module doc). `vdotr` = (u_i - u_w) . r_iw, r = |r_iw|.
+#[inline(always)]
+pub fn wall_pressure_sum(p_i: f64, rho_i: f64, vdotr: f64, r: f64, c: f64) -> f64 {
+    crate::sph::riemann::pressure_sum(p_i, p_i, rho_i, rho_i, vdotr, r, c, false)
+}
+
 /// One side of a pair: pressure, density and sound speed of a particle.
 #[derive(Debug, Clone, Copy)]
 pub struct State {

@@ -231,11 +231,10 @@ fn body_pair_force(
         touches = true;
         let (dy, dz) = e.offset(yi, zi, &pt.y, &pt.z);
         let vyj = if e.mirrored { -pt.vy[j] } else { pt.vy[j] };
+        let vdotr = (vyi - vyj) * dy + (vzi - pt.vz[j]) * dz;
         let psum = if let Some(c_air) = wall_air {
-            let vdotr = (vyi - vyj) * dy + (vzi - pt.vz[j]) * dz;
-            riemann::pressure_sum(p_i, p_i, rho_i, rho_i, vdotr, e.r, c_air, false)
+            crate::sph::air::wall_pressure_sum(p_i, rho_i, vdotr, e.r, c_air)
         } else if riemann {
-            let vdotr = (vyi - vyj) * dy + (vzi - pt.vz[j]) * dz;
             riemann::pressure_sum(p_i, pt.p[j], rho_i, pt.rho[j], vdotr, e.r, c0, false)
         } else {
             p_i + pt.p[j]

@@ -474,7 +474,9 @@ pub fn resolve(
 /// low, [`air::auto_needs_air`], within the expected wetted half-width: the half-breadth at the keel's
 /// deepest immersion, times pi/2 for the water's rise, Wagner 1932), a layer of standard air over the
 /// calm surface as wide as the band of base resolution (the refined tank's, or 1.5 half-breadths without
-/// one) and as high as the section above the water at the start, plus a kernel support.
+/// one) and as high as the section above the water at the start plus the air gap under the keel (given,
+/// or the larger of [`air::CLEARANCE_DP`] spacings and [`air::FLAT_GAP_FRACTION`] of the flat keel's
+/// half-width) plus 3 spacings.
 fn resolve_air(
     section: &Section,
     o: &Overrides,

@@ -138,15 +138,22 @@ impl Simulation {
         };
         let mut pt = Particles::default();
         let d0 = setup.initial_immersion;
-        // A section immersed at the start: no fluid inside it or within dp/2 of its contour (the
-        // spacing a fluid particle keeps from a wall), in the body frame (keel at z = -d0).
-        let keep = |y: f64, z: f64| match &section {
-            Some(sec) if d0 > 0.0 => {
-                !sec.contains(y, z + d0)
-                    && body::distance_to_polyline(sec.full_contour(), y, z + d0) >= 0.5 * dp
+        // With air, a keel entry starts with the keel `clearance` above the calm surface, at the time
+        // t = -clearance / V0 (t = 0 stays the instant it reaches the calm surface). The keel starts at
+        // z = z0.
+        let clearance = setup.air.map_or(0.0, |a| a.clearance);
+        let z0 = clearance - d0;
+        // No water or air inside the body or within dp/2 of its contour (the spacing a fluid particle
+        // keeps from a wall), in the body frame (keel at z = z0).
+        let outside_body = |y: f64, z: f64| match &section {
+            Some(sec) => {
+                !sec.contains(y, z - z0)
+                    && body::distance_to_polyline(sec.full_contour(), y, z - z0) >= 0.5 * dp
             }
-            _ => true,
+            None => true,
         };
+        // The water of a section immersed at the start keeps out of it.
+        let keep = |y: f64, z: f64| d0 <= 0.0 || outside_body(y, z);
         match &setup.refinement {
             Some(band) => refinement::fill(
                 &mut pt, &tank, band, dp, layers, mirror, &eos, setup.g, &keep,
@@ -154,10 +161,6 @@ impl Simulation {
             None if d0 > 0.0 => tank.fill_where(&mut pt, dp, layers, mirror, &eos, setup.g, &keep),
             None => tank.fill(&mut pt, dp, layers, mirror, &eos, setup.g),
         }
-        // With air, a keel entry starts with the keel `clearance` above the calm surface, at the time
-        // t = -clearance / V0 (t = 0 stays the instant it reaches the calm surface).
-        let clearance = setup.air.map_or(0.0, |a| a.clearance);
-        let z0 = clearance - d0;
         let mut body = BodyState {
             z_keel: z0,
             ..BodyState::default()
@@ -193,20 +196,7 @@ impl Simulation {
         }
         let air = setup.air.map(|a| a.phase());
         if let Some(layer) = &setup.air {
-            fill_air(
-                &mut pt,
-                layer,
-                dp,
-                mirror,
-                setup.g,
-                &|y, z| match &section {
-                    Some(sec) => {
-                        !sec.contains(y, z - z0)
-                            && body::distance_to_polyline(sec.full_contour(), y, z - z0) >= 0.5 * dp
-                    }
-                    None => true,
-                },
-            );
+            fill_air(&mut pt, layer, dp, mirror, setup.g, &outside_body);
         }
         let sensors = SensorSet::new(&setup.sensors, section.as_ref(), dp)?;
         // Wall layers are 2 dp thick each in a refined tank.

@@ -119,8 +119,7 @@ fn pressure_sum(ph: &Phases, ki: Kind, p_i: f64, rho_i: f64, q: &Pair) -> f64 {
     match q.kind {
         Kind::Wall | Kind::Body => {
             if ki == Kind::Air {
-                // The air's own pressure as the wall's, with the mirrored wall velocity.
-                riemann::pressure_sum(p_i, p_i, rho_i, rho_i, q.vdotr, q.r, ci, false)
+                air::wall_pressure_sum(p_i, rho_i, q.vdotr, q.r, ci)
             } else {
                 riemann::pressure_sum(p_i, q.p, rho_i, q.rho, q.vdotr, q.r, ci, false)
             }

@@ -108,19 +108,11 @@ pub fn resolve(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::sph::particles::Kind;
 
     fn one_fluid(y: f64, z: f64, vy: f64, vz: f64) -> Particles {
         let mut pt = Particles::default();
-        pt.push(
-            crate::sph::particles::Kind::Fluid,
-            y,
-            z,
-            vy,
-            vz,
-            1000.0,
-            0.0,
-            1e-4,
-        );
+        pt.push(Kind::Fluid, y, z, vy, vz, 1000.0, 0.0, 1e-4);
         pt
     }
 
