@@ -1,15 +1,17 @@
 //! `slamtool assess` end to end on the Ochi V-form (two stations, two speeds): the analytic fidelity, SPH
 //! at a very coarse resolution (10 particles across the half-breadth, no convergence companion) on 1 and 2
 //! threads, the cache (a rerun and a resumed run give a byte-identical summary.json), the limit gate's
-//! exit status and bad input.
+//! exit status, bad input, and `--air auto` at the flat 0.227 Lpp station.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 use slamtool::assess::{self, Fidelity, Settings};
 use slamtool::hull::Hull;
+use slamtool::loads::anatomy::ImpactStatus;
 use slamtool::progress::ProgressHandle;
 use slamtool::sea::SeaState;
+use slamtool::sph::air::AirChoice;
 use slamtool::sph::{Overrides, StudyPlan};
 
 fn data(rel: &str) -> PathBuf {
@@ -340,5 +342,73 @@ fn bad_input_is_a_clear_error_not_a_panic() {
     assert!(
         err.contains("notes.txt") && err.contains("--force"),
         "{err}"
+    );
+}
+
+#[test]
+fn air_auto_gives_the_flat_keel_a_cushioned_design_value_and_says_so() {
+    // Ochi's flat 0.227 Lpp station at 2.6 m/s, coarse (10 particles across the half-breadth): with
+    // `--air auto` its flat panels get the two-phase run's cushion peak; without air, no value.
+    let (h, sea) = inputs();
+    let d = tempfile::tempdir().unwrap();
+    let quiet = ProgressHandle::default();
+    let run = |air: AirChoice, dir: &str| {
+        let mut s = settings(Fidelity::Screen, 2);
+        s.stations = vec![0.227];
+        s.speeds = Some(vec![2.6]);
+        s.overrides.air = Some(air);
+        assess::run(&h, &sea, &s, &d.path().join(dir), &quiet)
+            .unwrap()
+            .0
+    };
+    let a = run(AirChoice::Auto, "air");
+    let e = a.events.iter().find(|e| e.sph.is_some()).unwrap();
+    let r = e.sph.as_ref().unwrap();
+    let why = r.air.as_deref().unwrap();
+    assert!(
+        why.contains("air auto") && why.contains("with air"),
+        "{why}"
+    );
+    let flat: Vec<_> = r
+        .sensors
+        .iter()
+        .filter(|q| q.impact == Some(ImpactStatus::Cushioned))
+        .collect();
+    assert!(flat.iter().any(|q| q.name == "S227-1"), "{:?}", r.sensors);
+    for q in &flat {
+        let (t, w) = (q.slamming_peak_time_s.unwrap(), q.impact_window_s.unwrap());
+        assert!(w[0] < 0.0 && t >= w[0] && t <= w[1], "{q:?}");
+        let dv = a.stations[0]
+            .design_pressure_pa
+            .iter()
+            .find(|x| x.name == q.name)
+            .unwrap();
+        // the two-phase peak, or (not converged, below it) the analytic value where the models give one
+        assert!(dv.source.contains("with air"), "{dv:?}");
+        assert!(dv.value.unwrap() >= q.slamming_peak_pa.unwrap(), "{dv:?}");
+    }
+    assert!(
+        a.warnings
+            .iter()
+            .any(|w| w.contains("flat keel") && w.contains("have air as a second phase")),
+        "{:?}",
+        a.warnings
+    );
+    assert_eq!(a.settings["air"], "auto");
+    // water only: the same panels have no design value, and the warning says why
+    let b = run(AirChoice::Off, "water");
+    for q in flat.iter().filter(|q| q.name == "S227-1") {
+        let dv = b.stations[0]
+            .design_pressure_pa
+            .iter()
+            .find(|x| x.name == q.name)
+            .unwrap();
+        assert_eq!(dv.value, None, "{dv:?}");
+        assert!(dv.source.contains("not computed without air"), "{dv:?}");
+    }
+    assert!(
+        b.events
+            .iter()
+            .all(|e| e.sph.as_ref().is_none_or(|r| r.air.is_none()))
     );
 }

@@ -131,15 +131,16 @@ fn analytic_label(status: Option<ImpactStatus>) -> &'static str {
 }
 
 /// The source of a panel without a design value: SPH does not compute its impact (`status`) and the
-/// analytic models give no peak there.
+/// analytic models give no peak there (`--air auto` or `on` computes it).
 pub const NO_VALUE_FLAT_KEEL: &str =
-    "none (flat keel: air-cushion impact, not computed without air)";
+    "none (flat keel: air-cushion impact, not computed without air; run with --air auto)";
 
 /// The source of a design value that no model gives: SPH does not resolve the impact (`status`) and
 /// the analytic models have no peak for the panel.
 fn none_label(status: Option<ImpactStatus>) -> &'static str {
     match status {
         Some(ImpactStatus::Acoustic) => NO_VALUE_FLAT_KEEL,
+        Some(ImpactStatus::Cushioned) => "none (flat keel with air: no cushion peak in the run)",
         Some(ImpactStatus::InTransient) => {
             "none (SPH: impact in the contact transient; no analytic peak on a panel wetted at contact)"
         }
@@ -190,7 +191,7 @@ pub fn decide(q: Option<SphQuantity>, a: AnalyticPeak) -> Option<Decision> {
         return analytic(super::results::DRY_SOURCE);
     }
     let p = match (q.status, q.slamming) {
-        (Some(ImpactStatus::Resolved), Some(p)) | (None, Some(p)) => p,
+        (Some(ImpactStatus::Resolved | ImpactStatus::Cushioned), Some(p)) | (None, Some(p)) => p,
         (status, _) => {
             return analytic(analytic_label(status)).or(Some(Decision {
                 value: None,
@@ -201,26 +202,46 @@ pub fn decide(q: Option<SphQuantity>, a: AnalyticPeak) -> Option<Decision> {
     };
     let u = q.gci.or(q.spread).map(|g| g * p.abs());
     let upper = p + u.unwrap_or(0.0);
+    let air = q.status == Some(ImpactStatus::Cushioned);
     if shown_converged(q.verdict) {
         return Some(Decision {
             value: Some(upper),
-            source: "sph (converged)",
+            source: if air {
+                SPH_AIR_CONVERGED
+            } else {
+                "sph (converged)"
+            },
             uncertainty: u,
         });
     }
     match a {
         Some(av) if av > upper => Some(Decision {
             value: Some(av),
-            source: "analytic (SPH not converged)",
+            source: if air {
+                "analytic (SPH with air not converged)"
+            } else {
+                "analytic (SPH not converged)"
+            },
             uncertainty: u,
         }),
         _ => Some(Decision {
             value: Some(upper),
-            source: "sph (not converged)",
+            source: if air {
+                SPH_AIR_NOT_CONVERGED
+            } else {
+                "sph (not converged)"
+            },
             uncertainty: u,
         }),
     }
 }
+
+/// The source of a flat keel's design value from a two-phase run ([`ImpactStatus::Cushioned`]) whose
+/// peak converged.
+pub const SPH_AIR_CONVERGED: &str = "sph with air (air-cushioned flat keel; converged)";
+
+/// As [`SPH_AIR_CONVERGED`], the peak not shown converged.
+pub const SPH_AIR_NOT_CONVERGED: &str = "sph with air (air-cushioned flat keel; not converged)";
 
 #[cfg(test)]
 mod tests {
@@ -235,6 +256,22 @@ mod tests {
             wetted: true,
             spread: None,
         }
+    }
+
+    #[test]
+    fn a_cushioned_flat_keel_has_its_two_phase_peak_labelled_with_air() {
+        let mut c = q(20_000.0, Some(0.1), "acceptable");
+        c.status = Some(ImpactStatus::Cushioned);
+        let d = decide(Some(c), AnalyticPeak::NoPeakAfterStart).unwrap();
+        assert_eq!(d.source, SPH_AIR_CONVERGED);
+        assert_eq!(d.value, Some(22_000.0));
+        c.verdict = Some("not_converged");
+        let d = decide(Some(c), AnalyticPeak::NoPeakAfterStart).unwrap();
+        assert_eq!(d.source, SPH_AIR_NOT_CONVERGED);
+        // without air the same panel has no value
+        c.status = Some(ImpactStatus::Acoustic);
+        let d = decide(Some(c), AnalyticPeak::NoPeakAfterStart).unwrap();
+        assert_eq!((d.value, d.source), (None, NO_VALUE_FLAT_KEEL));
     }
 
     #[test]

@@ -117,7 +117,9 @@ fn record(key: &str, s: &RunSummary) -> SphRecord {
                     convergence: c,
                     convergence_statement: st,
                     wetted: reached >= dry_below
-                        || a.is_some_and(|a| a.status != ImpactStatus::Resolved),
+                        || a.is_some_and(|a| {
+                            !matches!(a.status, ImpactStatus::Resolved | ImpactStatus::Cushioned)
+                        }),
                     still_rising: q.summary.at_record_end,
                     impact: a.map(|a| a.status),
                     impact_window_s: a.and_then(|a| a.window.map(|w| [w.start_s, w.end_s])),
@@ -146,7 +148,21 @@ fn record(key: &str, s: &RunSummary) -> SphRecord {
             .collect(),
         stopped_early: s.stopped_early.clone(),
         warnings: s.warnings.clone(),
+        air: air_statement(s),
     }
+}
+
+/// Whether a run had air, and why: the air choice's note and the layer's (None when air was off; with
+/// `--air auto` on a section that did not need it, the note that says so).
+fn air_statement(s: &RunSummary) -> Option<String> {
+    let notes: Vec<&str> = s
+        .setup
+        .notes
+        .iter()
+        .filter(|n| n.starts_with("air"))
+        .map(String::as_str)
+        .collect();
+    (!notes.is_empty()).then(|| notes.join("; "))
 }
 
 /// The sensor method of an assessment's SPH runs unless `--sensor-method` says otherwise: the force
@@ -579,6 +595,7 @@ pub fn run(
             .overrides
             .shifting
             .unwrap_or(crate::sph::case::DEFAULT_SHIFTING),
+        "air": s.overrides.air.unwrap_or_default(),
         "sensor_method": s.overrides.sensor_method.unwrap_or(DESIGN_SENSOR_METHOD),
         "convergence_levels": s.study.levels,
         "convergence_ratio": s.study.ratio,
@@ -593,7 +610,8 @@ pub fn run(
                          uncertainty where converged, else the larger of that and the analytic (MLM) peak \
                          (where the levels' peaks are different events, U is the difference between them), \
                          or the analytic peak where SPH does not resolve the impact, and no value where \
-                         neither computes it (a flat keel's air-cushion impact) (src/assess/design_rule.rs)",
+                         neither computes it (a flat keel's air-cushion impact without --air; with air the \
+                         two-phase run's cushion peak) (src/assess/design_rule.rs)",
     });
     let mut inputs = hull.input_files();
     inputs.push(sea.source.as_path());

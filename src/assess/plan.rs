@@ -14,6 +14,7 @@ use crate::report::sanity::SlamFlag;
 use crate::sea::SeaState;
 use crate::seakeeping::ShipModel;
 use crate::seakeeping::analysis::{self, Report, Request};
+use crate::sph::air::AirChoice;
 use crate::sph::{MotionSpec, Overrides, SensorSpec, StudyPlan};
 
 /// How each event's water entry is computed.
@@ -350,11 +351,17 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
     let mut warnings = s.warnings.clone();
     warnings.extend(motions.warnings.iter().cloned());
     warnings.extend(design_warnings);
+    let air = match s.overrides.air {
+        Some(c @ (AirChoice::On | AirChoice::Auto)) if s.fidelity != Fidelity::Analytic => Some(c),
+        _ => None,
+    };
     for &f in &at {
-        warnings.extend(impact::air_cushion_warning(
-            f,
-            &hull.section_at(hull.station_x(f))?.points,
-        ));
+        let points = &hull.section_at(hull.station_x(f))?.points;
+        warnings.extend(match air {
+            Some(AirChoice::On) => impact::air_cushion_statement(f, points, "on"),
+            Some(_) => impact::air_cushion_statement(f, points, "auto"),
+            None => impact::air_cushion_warning(f, points),
+        });
     }
     for q in sensors.iter().filter(|q| q.default) {
         warnings.push(format!(

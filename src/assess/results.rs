@@ -169,6 +169,17 @@ pub fn sensor_warnings(r: &SphRecord, analytic: Option<&Estimate>) -> Vec<String
             r.dp_m * 1e3
         ));
     }
+    let cushioned = group(ImpactStatus::Cushioned);
+    if !cushioned.is_empty() {
+        out.push(format!(
+            "sensors {}: on the flat keel, computed with air (a two-phase run): their slamming peaks are the \
+             air cushion's, taken from the start of the run (the keel's approach through the air gap) to the \
+             end of the widened analytic crossing; no analytic model computes a cushioned impact, so these \
+             peaks have no analytic cross-check (docs/guide/air.md states what the two-phase model is \
+             validated against)",
+            cushioned.join(", ")
+        ));
+    }
     let acoustic = group(ImpactStatus::Acoustic);
     if !acoustic.is_empty() {
         out.push(format!(
@@ -250,6 +261,10 @@ pub struct SphRecord {
     pub sensors: Vec<SphSensor>,
     pub stopped_early: Option<String>,
     pub warnings: Vec<String>,
+    /// Whether the run had air as a second phase, and why (`--air`; [`crate::sph::air`]): the choice's
+    /// note (with `auto`, the deadrise it found) and the air layer; None when air was off.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub air: Option<String>,
 }
 
 /// One station at one speed in one regular wave.
@@ -820,6 +835,7 @@ mod tests {
                 sph_sensor("K3", 47.0, false, false),
             ],
             stopped_early: None,
+            air: None,
             warnings: Vec::new(),
         };
         EventResult {

@@ -4,7 +4,6 @@ use std::path::PathBuf;
 
 use clap::{Args, Subcommand};
 use slamtool::provenance::{Provenance, TOOL};
-use slamtool::sph::air::AirChoice;
 use slamtool::sph::{
     self, Level, MotionSpec, Overrides, RunOptions, RunResult, SensorMethod, SensorSpec,
     body::Section,
@@ -97,10 +96,6 @@ pub struct Numerics {
     /// Whole tank instead of a half tank with a symmetry plane.
     #[arg(long)]
     full_domain: bool,
-    /// Air as a second phase (two-phase SPH, for the air cushion of flat and low-deadrise sections):
-    /// off, on, or auto (on where the deadrise within the expected wetted half-width is below 15 deg).
-    #[arg(long, value_enum, default_value = "off")]
-    air: AirChoice,
     #[command(flatten)]
     sph: SphOptions,
 }
@@ -180,7 +175,7 @@ fn overrides(n: &Numerics, c: &Common) -> Overrides {
         c0: n.c0,
         t_end: n.t_end,
         mirror: n.full_domain.then_some(false),
-        air: Some(n.air),
+        air: Some(n.sph.air),
         refinement: n.sph.refinement(),
         divergence_correction: n.sph.divergence_correction(),
         shifting: n.sph.shifting(),
@@ -204,7 +199,7 @@ fn settings(n: Option<&Numerics>, c: &Common) -> serde_json::Value {
         v["c0_m_per_s"] = serde_json::json!(n.c0);
         v["t_end_s"] = serde_json::json!(n.t_end);
         v["full_domain"] = serde_json::json!(n.full_domain);
-        v["air"] = serde_json::json!(n.air);
+        v["air"] = serde_json::json!(n.sph.air);
         v["tank"] = serde_json::json!(n.sph.tank);
         v["refined_tank"] = serde_json::json!(n.sph.refined_tank);
         v["divergence_correction"] = serde_json::json!(n.sph.divergence_correction);

@@ -9,6 +9,7 @@ use std::sync::OnceLock;
 
 use clap::{Args, ValueEnum};
 use slamtool::sph::TankLayout;
+use slamtool::sph::air::AirChoice;
 
 /// Largest `-j N` accepted (threads or parallel runs): more than any machine slamtool runs on has cores,
 /// and few enough that a typing slip (`-j 100000`) cannot start a hundred thousand threads. 0 is refused:
@@ -205,6 +206,11 @@ pub struct SphOptions {
     /// docs/numerics/wedge-convergence.md). At the default resolution it reads high; not the default.
     #[arg(long)]
     pub shifting: bool,
+    /// Air as a second phase (two-phase SPH, for the air cushion of flat and low-deadrise sections):
+    /// off, on, or auto (on where the deadrise within the expected wetted half-width is below 15 deg;
+    /// docs/guide/air.md).
+    #[arg(long, value_enum, default_value = "off")]
+    pub air: AirChoice,
 }
 
 impl SphOptions {

@@ -155,6 +155,22 @@ pub fn air_cushion_warning(aft_of_fp: f64, points: &[[f64; 2]]) -> Option<String
     })
 }
 
+/// The statement that replaces [`air_cushion_warning`] when the station's SPH runs have air (`--air on`,
+/// or `auto`, which turns air on for every flat keel): None without a flat keel.
+pub fn air_cushion_statement(aft_of_fp: f64, points: &[[f64; 2]], choice: &str) -> Option<String> {
+    let flat = flat_keel_half_width(points);
+    let widest = points.iter().map(|p| p[0]).fold(0.0, f64::max);
+    (flat > 0.0 && flat >= 0.05 * widest).then(|| {
+        format!(
+            "station {aft_of_fp} Lpp has a flat keel (half-width {flat:.4} m): its SPH runs have air as a \
+             second phase (--air {choice}), so the design values of the panels on the flat are the peaks of \
+             the air-cushioned impact the two-phase run computes (their source says \"sph with air\"); the \
+             analytic models give no peak there, so those values have no analytic cross-check, and the \
+             two-phase model's validation is in docs/guide/air.md"
+        )
+    })
+}
+
 /// Deadrise below which the water meets the hull through a cushion of air (deg): about 15-20 deg
 /// (the brief of the air-cushion issue; Veen 2010 s. 5 for Breder's 10 deg wedge); the lower end is used.
 pub const LOW_DEADRISE_DEG: f64 = 15.0;

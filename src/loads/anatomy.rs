@@ -29,7 +29,9 @@
 //! both of its neighbours, which no physical pressure pulse resolved by several samples can produce).
 //! Where Wagner's contact crosses the sensor inside the contact transient, or with an acoustic contact
 //! speed (a flat keel), single-phase SPH with an artificial sound speed does not compute the impact at
-//! all: the anatomy says so and gives no slamming peak. The hydrostatic part at the time of the peak,
+//! all: the anatomy says so and gives no slamming peak. In a run with air the flat keel's impact is the
+//! air cushion's ([`ImpactStatus::Cushioned`]): its window runs from the start of the run, the keel's
+//! approach through the air gap, to the widened end of Wagner's crossing, with no contact transient. The hydrostatic part at the time of the peak,
 //! rho g (d(t) - z_s) with d the keel depth below the calm surface and z_s the height of the sensor
 //! centre above the keel (zero when the sensor is above the calm surface), is reported beside it, since
 //! class rules treat the two apart.
@@ -96,6 +98,11 @@ pub enum ImpactStatus {
     /// Wagner's contact crosses the sensor at an acoustic speed (a flat or nearly flat keel): the impact
     /// is a water-hammer pressure that single-phase SPH with an artificial sound speed does not compute.
     Acoustic,
+    /// A sensor Wagner's contact would cross at an acoustic speed (a flat keel), in a run with air
+    /// ([`crate::sph::air`]): the impact is the air cushion's, which the two-phase run computes. Its window
+    /// opens at the start of the run (the keel's approach through the air gap, where the cushion builds)
+    /// and the contact transient does not apply to it: the keel meets air first, not the water.
+    Cushioned,
     /// Wagner's contact does not reach the sensor within the run (it stops at a chine or the widest point,
     /// or the run ends first).
     NotCrossed,
@@ -116,6 +123,7 @@ impl ImpactStatus {
             ImpactStatus::Acoustic => {
                 "acoustic impact (flat keel): not computed by single-phase SPH with an artificial c0"
             }
+            ImpactStatus::Cushioned => "air-cushioned impact (flat keel, two-phase run with air)",
             ImpactStatus::NotCrossed => "the analytic contact does not reach the sensor in the run",
             ImpactStatus::WettedAtStart => "wetted at the start of the run: no impact",
             ImpactStatus::AfterRecord => "the run ends before the impact window",
@@ -147,11 +155,25 @@ impl ImpactWindow {
         }
     }
 
+    /// The window of a cushioned sensor ([`ImpactStatus::Cushioned`]): from `t_start`, the start of the
+    /// run (the keel above the calm surface by the air gap), to Wagner's crossing of the sensor's upper
+    /// edge `t_hi` widened as [`ImpactWindow::around`] widens it.
+    pub fn cushioned(t_start: f64, t_hi: f64, dp: f64, v: f64) -> Self {
+        let lag = if v > 0.0 { LAG_SPACINGS * dp / v } else { 0.0 };
+        Self {
+            crossing_start_s: t_start,
+            crossing_end_s: t_hi,
+            start_s: t_start,
+            end_s: t_hi.max(0.0) * (1.0 + WINDOW_FRACTION) + lag,
+        }
+    }
+
     /// The impact duration the peak-time match is measured against (s): the time from the start of the
-    /// entry to the end of the crossing, the time scale of a self-similar impact (every time of a
-    /// constant-speed wedge entry scales with it).
+    /// entry (or of the approach through the air gap, for a cushioned sensor) to the end of the crossing,
+    /// the time scale of a self-similar impact (every time of a constant-speed wedge entry scales with
+    /// it).
     pub fn duration(&self) -> f64 {
-        self.crossing_end_s
+        self.crossing_end_s - self.crossing_start_s.min(0.0)
     }
 }
 
@@ -328,7 +350,9 @@ pub fn anatomy(t: &[f64], x: &[f64], e: &Expectation, hydrostatic: &dyn Fn(f64) 
     let Some(k) = arg_max(a..b) else {
         return out;
     };
-    out.status = ImpactStatus::Resolved;
+    if e.status != ImpactStatus::Cushioned {
+        out.status = ImpactStatus::Resolved;
+    }
     out.slamming_peak = Some(Peak {
         value: x[k],
         time: t[k],

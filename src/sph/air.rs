@@ -134,7 +134,8 @@ pub fn auto_needs_air(half: &[[f64; 2]], wetted_half_width: f64) -> (bool, Strin
     }
     let on = least < AUTO_DEADRISE_DEG;
     let why = format!(
-        "air auto: smallest deadrise {least:.1} deg within the expected wetted half-width {wetted_half_width:.3} m,          {} the {AUTO_DEADRISE_DEG} deg below which an air cushion forms: {}",
+        "air auto: smallest deadrise {least:.1} deg within the expected wetted half-width {wetted_half_width:.3} m, \
+         {} the {AUTO_DEADRISE_DEG} deg below which an air cushion forms: {}",
         if on { "below" } else { "not below" },
         if on { "with air" } else { "water only" }
     );

@@ -282,10 +282,22 @@ fn summarise_run(sim: &Simulation, wall_s: f64, stopped: Option<String>) -> Resu
     let h = &sim.history;
     let s = &sim.setup;
     let fc = s.filter_cutoff_hz;
-    let t_tr = contact_transient_end(h, s.dp);
-    let phases = sim
-        .section()
-        .map(|sec| phases::RunPhases::new(sec, h, s.dp, s.c0, s.rho0, s.initial_immersion, t_tr));
+    let phases = sim.section().map(|sec| {
+        phases::RunPhases::new(
+            sec,
+            h,
+            s.dp,
+            s.c0,
+            s.rho0,
+            s.initial_immersion,
+            contact_transient_end(h, s.dp),
+        )
+        .with_air(s.air.is_some())
+    });
+    // (a flat keel with air has none: [`phases::RunPhases::with_air`])
+    let t_tr = phases
+        .as_ref()
+        .map_or_else(|| contact_transient_end(h, s.dp), |p| p.transient_end_s);
     let force = NamedSummary {
         name: "section force".into(),
         unit: "N/m".into(),

@@ -5,6 +5,10 @@
 //!
 //! Rules beyond the module notes of [`crate::loads::anatomy`]:
 //!
+//! * in a run with air at a flat keel, the sensors reaching onto the flat (their lower edge wetted in
+//!   Wagner's acoustic stage) are **cushioned**: their window opens at the start of the run, the
+//!   keel's approach through the air gap, and the flat keel has no contact transient
+//!   ([`RunPhases::with_air`]);
 //! * a sensor is crossed by the contact at an **acoustic** speed when Wagner's contact speed there is
 //!   at the water-hammer limit (a flat keel: c jumps to the flat half-width at contact), or when Wagner's
 //!   jet-root pressure rho c'^2 / 2 at the crossing exceeds rho c0 V, the largest pressure a weakly
@@ -48,6 +52,8 @@ pub struct RunPhases<'a> {
     pub rho: f64,
     pub d0: f64,
     pub transient_end_s: f64,
+    /// The run has air ([`crate::sph::air`]): a flat keel's impact is cushioned, not acoustic.
+    pub air: bool,
 }
 
 impl<'a> RunPhases<'a> {
@@ -82,7 +88,30 @@ impl<'a> RunPhases<'a> {
             rho,
             d0,
             transient_end_s,
+            air: false,
         }
+    }
+
+    /// The phases of a run with air (`air` true): the sensors of a flat keel are cushioned
+    /// ([`ImpactStatus::Cushioned`]), and a flat keel, which meets the water through the air cushion, has
+    /// no contact transient: it ends at the start of the run, so the section force's window and every
+    /// sensor's open there.
+    pub fn with_air(mut self, air: bool) -> Self {
+        self.air = air;
+        if air && self.flat_keel() {
+            // the flat keel meets the water through the air cushion: no acoustic contact transient
+            self.transient_end_s = self.history.t.first().copied().unwrap_or(0.0).min(0.0);
+        }
+        self
+    }
+
+    /// The keel is flat: Wagner's contact starts at the water-hammer limit.
+    fn flat_keel(&self) -> bool {
+        self.d0 == 0.0
+            && self
+                .wagner
+                .as_ref()
+                .is_some_and(|w| w.acoustic_limited.first().copied().unwrap_or(false))
     }
 
     fn keel_depth(&self, t: f64) -> f64 {
@@ -124,6 +153,19 @@ impl<'a> RunPhases<'a> {
         let v = self.speed(t_hi);
         let acoustic = (self.d0 == 0.0 && w.acoustic_limited.get(k).copied().unwrap_or(false))
             || w.peak_pressure.get(k).copied().unwrap_or(0.0) > self.rho * self.c0 * v.max(0.0);
+        // with air, a sensor that reaches onto the flat keel (its lower edge wetted in the acoustic
+        // stage) takes the cushion's load too
+        let k_lo = w.half_width.iter().position(|&c| c >= y_lo).unwrap_or(0);
+        let on_flat = self.d0 == 0.0 && w.acoustic_limited.get(k_lo).copied().unwrap_or(false);
+        if (acoustic || on_flat) && self.air && self.flat_keel() {
+            let t_start = self.history.t.first().copied().unwrap_or(0.0).min(0.0);
+            return Expectation {
+                window: Some(ImpactWindow::cushioned(t_start, t_hi, self.dp, v)),
+                status: ImpactStatus::Cushioned,
+                transient_end_s: t_start.min(self.transient_end_s),
+                crossing_half_width_m: Some(y_hi),
+            };
+        }
         if acoustic {
             return none(ImpactStatus::Acoustic, Some(y_hi));
         }
@@ -233,5 +275,50 @@ mod tests {
             ph.sensor_expectation([0.01, 0.03]).status,
             ImpactStatus::Acoustic
         );
+    }
+
+    #[test]
+    fn a_flat_keel_with_air_is_cushioned_from_the_start_of_the_approach() {
+        let flat =
+            Section::from_half_points(vec![[0.0, 0.0], [0.05, 0.0], [0.3, 0.15], [0.3, 0.3]])
+                .unwrap();
+        // the keel starts 10 mm above the calm surface at 2 m/s: t from -5 ms
+        let mut h = history(2.0, 1e-4, 2001);
+        for t in h.t.iter_mut() {
+            *t -= 0.005;
+        }
+        h.z_keel = h.t.iter().map(|&t| -2.0 * t).collect();
+        let ph = RunPhases::new(&flat, &h, 0.002, 40.0, 1000.0, 0.0, 0.002).with_air(true);
+        assert_eq!(ph.transient_end_s, -0.005, "no contact transient");
+        let e = ph.sensor_expectation([0.01, 0.03]);
+        assert_eq!(e.status, ImpactStatus::Cushioned);
+        let w = e.window.unwrap();
+        assert_eq!(w.start_s, -0.005);
+        assert!(w.end_s > 0.0 && w.duration() >= 0.005, "{w:?}");
+        // the cushion peaks before the keel reaches the calm surface: that is its slamming peak
+        let x: Vec<f64> =
+            h.t.iter()
+                .map(|&t| 1e4 * (-((t + 0.001) / 5e-4).powi(2)).exp())
+                .collect();
+        let a = ph.sensor([0.01, 0.03], &x);
+        assert_eq!(a.status, ImpactStatus::Cushioned);
+        assert!(
+            (a.slamming_peak.unwrap().time + 0.001).abs() < 1e-9,
+            "{a:?}"
+        );
+        // a sensor reaching onto the flat from beyond it takes the cushion too
+        let e = ph.sensor_expectation([0.04, 0.08]);
+        assert_eq!(e.status, ImpactStatus::Cushioned);
+        // a sensor beyond the flat keeps Wagner's window
+        let e = ph.sensor_expectation([0.15, 0.17]);
+        assert_eq!(e.status, ImpactStatus::Resolved);
+        assert!(e.window.unwrap().start_s > 0.0);
+        // the force's window opens at the start too
+        assert_eq!(ph.force().window.unwrap().start_s, -0.005);
+        // a V keel with air keeps its contact transient
+        let beta = 10f64.to_radians();
+        let sec = Section::wedge(beta, 0.3, 0.3).unwrap();
+        let ph = RunPhases::new(&sec, &h, 0.002, 40.0, 1000.0, 0.0, 0.002).with_air(true);
+        assert_eq!(ph.transient_end_s, 0.002);
     }
 }

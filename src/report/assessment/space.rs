@@ -407,6 +407,7 @@ pub fn appendix(r: &mut Report, saved: &Saved) {
         schemes.sort();
         schemes.dedup();
         r.para(&format!("Numerics: {}.", schemes.join("; ")));
+        r.para(&air_text(saved));
         r.para(
             "Sound speed: the automatic c0 keeps the density change to 1 % at Wagner's peak pressure, which \
              puts Wagner's wetted contact at Mach 0.14, (pi/2) V cot(beta) / c0, wherever that bound sets c0 \
@@ -445,6 +446,57 @@ pub fn appendix(r: &mut Report, saved: &Saved) {
         "Histories (pressure, force, velocity) are plotted from the run folders named in summary.json \
          (cache/<key>/history.csv); every plotted number of every figure is in its CSV twin in figures/.",
     );
+}
+
+/// Which SPH runs had air as a second phase, and why (each run's air note, from its setup), or that
+/// none had.
+fn air_text(saved: &Saved) -> String {
+    let mut with = Vec::new();
+    let mut auto_without = Vec::new();
+    for (e, run) in saved.events().iter().zip(&saved.runs) {
+        let Some(run) = run else { continue };
+        let st = &run.summary["setup"];
+        let what = format!(
+            "station {} at {} m/s ({})",
+            num(e, "station").unwrap_or(f64::NAN),
+            speed_text(num(e, "speed_m_per_s")),
+            text(e, "wave")
+        );
+        let why = st["notes"]
+            .as_array()
+            .into_iter()
+            .flatten()
+            .filter_map(serde_json::Value::as_str)
+            .find(|n| n.starts_with("air auto:") || n.starts_with("air: on"))
+            .map(str::to_string);
+        if st["air"].is_object() {
+            with.push(format!(
+                "{what}: {}",
+                why.unwrap_or_else(|| "air on".into())
+            ));
+        } else if let Some(w) = why {
+            auto_without.push(format!("{what}: {w}"));
+        }
+    }
+    if with.is_empty() && auto_without.is_empty() {
+        return "Air: every SPH run is single-phase (water only; --air off). Air cushions the impact of flat \
+                and low-deadrise bottoms, which these runs do not compute."
+            .into();
+    }
+    let mut t = String::from("Air: ");
+    if with.is_empty() {
+        t.push_str("no SPH run had air. ");
+    } else {
+        t.push_str(&format!(
+            "runs with air as a second phase (standard air, adiabatic, with the two-phase Riemann pair terms; \
+             docs/guide/air.md): {}. ",
+            with.join("; ")
+        ));
+    }
+    if !auto_without.is_empty() {
+        t.push_str(&format!("Runs without air: {}.", auto_without.join("; ")));
+    }
+    t.trim_end().to_string()
 }
 
 /// The SPH scheme of a run's setup (summary.json `setup`), in words: the pair terms, the velocity
