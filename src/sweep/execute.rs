@@ -205,6 +205,7 @@ fn assess_case(p: &Prepared, i: usize, out: &Path, threads: Option<usize>) -> Re
         fidelity: p.common.fidelity,
         overrides: Overrides {
             level: Some(p.common.resolution),
+            air: Some(p.common.air),
             ..Default::default()
         },
         study: StudyPlan {
@@ -406,6 +407,7 @@ pub fn assemble(p: &Prepared, shard: Option<Shard>, cases: Vec<CaseResult>) -> R
         "stations": p.stations,
         "fidelity": p.common.fidelity.name(),
         "resolution": p.common.resolution,
+        "air": p.common.air,
         "convergence_levels": p.common.convergence_levels,
         "strips": p.common.strips,
         "bow_region": p.common.region,

@@ -2,6 +2,7 @@
 //! the file, so a bad value, an invalid range or a case whose transformed hull is invalid is reported as
 //! `file:line:column`.
 
+use crate::sph::air::AirChoice;
 use std::ops::Range;
 use std::path::{Path, PathBuf};
 
@@ -205,6 +206,7 @@ pub struct SweepRaw {
     pub stations: Option<Spanned<Vec<Spanned<f64>>>>,
     pub fidelity: Option<Spanned<String>>,
     pub resolution: Option<Spanned<String>>,
+    pub air: Option<Spanned<String>>,
     pub convergence_levels: Option<Spanned<i64>>,
     pub strips: Option<Spanned<i64>>,
     pub bow_region: Option<Spanned<RegionRaw>>,
@@ -272,6 +274,8 @@ pub struct Common {
     pub stations: Vec<f64>,
     pub fidelity: Fidelity,
     pub resolution: Level,
+    /// Air as a second phase in the SPH runs (`air = "off" | "on" | "auto"`; default off).
+    pub air: AirChoice,
     pub convergence_levels: usize,
     pub strips: usize,
     pub region: Option<BowRegion>,
@@ -369,6 +373,20 @@ impl SweepFile {
                 }
             },
         };
+        let air = match &r.air {
+            None => AirChoice::Off,
+            Some(f) => match f.get_ref().as_str() {
+                "off" => AirChoice::Off,
+                "on" => AirChoice::On,
+                "auto" => AirChoice::Auto,
+                other => {
+                    return Err(self.error(
+                        f,
+                        format!("air = \"{other}\": use \"off\", \"on\" or \"auto\""),
+                    ));
+                }
+            },
+        };
         let convergence_levels = match &r.convergence_levels {
             None => 2,
             Some(n) if (1..=3).contains(n.get_ref()) => *n.get_ref() as usize,
@@ -419,6 +437,7 @@ impl SweepFile {
             stations,
             fidelity,
             resolution,
+            air,
             convergence_levels,
             strips,
             region,

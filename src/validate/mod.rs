@@ -8,6 +8,7 @@
 //! overlay plots of computed against reference curves (SVG with a CSV twin), its provenance and wall
 //! time.
 
+pub mod air;
 pub mod case;
 pub mod compare;
 pub mod conditions;
