@@ -307,7 +307,7 @@ pub fn cushion_ratio(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcome> {
             )));
         }
     };
-    if !(peak_a > 0.0) {
+    if peak_a.is_nan() || peak_a <= 0.0 {
         return Err(Error::Numerical(format!(
             "the run with air has no positive {what}: {peak_a}"
         )));
