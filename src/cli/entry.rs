@@ -537,19 +537,15 @@ fn go(mut setup: sph::Setup, run: Run, name: &str) -> slamtool::Result<()> {
             println!("  sensor {:8} not wetted during the run", s.name);
         }
     }
-    println!(
-        "contact transient (keel less than {} dp deep, up to {:.3} ms; acoustic, not a slamming load): \
-         contour pressure up to {:.1} kPa at {:.3} ms, force up to {:.1} N/m",
-        sph::CONTACT_TRANSIENT_DP,
-        summary.contact_transient_end_s * 1e3,
-        summary.contact_transient_pressure_pa * 1e-3,
-        summary.contact_transient_pressure_time_s * 1e3,
-        summary
-            .force
-            .summary
-            .contact_transient
-            .map_or(0.0, |p| p.value)
-    );
+    // a flat keel with air has none: its transient ends at the run's (negative) start
+    if summary.setup.air.is_some() && summary.contact_transient_end_s < 0.0 {
+        println!(
+            "contact transient: none (a flat keel with air meets the water through the air cushion; its \
+             impact is read from the start of the run)"
+        );
+    } else {
+        print_contact_transient(&summary);
+    }
     if let (Some(wf), Some(wt), Some(wp)) = (
         summary.wagner_peak_force_n_per_m,
         summary.wagner_peak_force_time_s,
@@ -596,4 +592,21 @@ fn go(mut setup: sph::Setup, run: Run, name: &str) -> slamtool::Result<()> {
     }
     println!("{}", global::files_written_line(&out));
     Ok(())
+}
+
+/// The contact transient's line of an entry report.
+fn print_contact_transient(summary: &sph::RunSummary) {
+    println!(
+        "contact transient (keel less than {} dp deep, up to {:.3} ms; acoustic, not a slamming load): \
+         contour pressure up to {:.1} kPa at {:.3} ms, force up to {:.1} N/m",
+        sph::CONTACT_TRANSIENT_DP,
+        summary.contact_transient_end_s * 1e3,
+        summary.contact_transient_pressure_pa * 1e-3,
+        summary.contact_transient_pressure_time_s * 1e3,
+        summary
+            .force
+            .summary
+            .contact_transient
+            .map_or(0.0, |p| p.value)
+    );
 }
