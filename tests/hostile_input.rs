@@ -743,3 +743,21 @@ fn report_from_another_folder_finds_the_hull() {
     assert!(d.join("rep/report.pdf").is_file());
     assert!(files_under(&res).iter().all(|p| !p.starts_with("rep")));
 }
+
+#[test]
+fn a_sweep_files_unknown_air_choice_is_located() {
+    let (_t, d) = setup();
+    let text = format!(
+        "name = \"bad-air\"\nhull = \"{ROOT}/hulls/ochi-vform.toml\"\nsea = \"{ROOT}/sea_states/ochi-1958.toml\"\n\
+         fidelity = \"screen\"\nair = \"maybe\"\n\n[grid]\nspeed_m_s = [2.0]\n"
+    );
+    std::fs::write(d.join("bad-air.toml"), text).unwrap();
+    let e = fails(
+        &["sweep", "bad-air.toml", "-o", "out-air"],
+        &d,
+        1,
+        "air = \"maybe\": use \"off\", \"on\" or \"auto\"",
+    );
+    assert!(e.contains("bad-air.toml:5:7"), "{e}");
+    assert!(!d.join("out-air").join("sweep.json").exists());
+}
