@@ -351,15 +351,17 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
     let mut warnings = s.warnings.clone();
     warnings.extend(motions.warnings.iter().cloned());
     warnings.extend(design_warnings);
+    // the `--air` choice under which the SPH runs have air (none without SPH runs)
     let air = match s.overrides.air {
-        Some(c @ (AirChoice::On | AirChoice::Auto)) if s.fidelity != Fidelity::Analytic => Some(c),
+        _ if s.fidelity == Fidelity::Analytic => None,
+        Some(AirChoice::On) => Some("on"),
+        Some(AirChoice::Auto) => Some("auto"),
         _ => None,
     };
     for &f in &at {
         let points = &hull.section_at(hull.station_x(f))?.points;
         warnings.extend(match air {
-            Some(AirChoice::On) => impact::air_cushion_statement(f, points, "on"),
-            Some(_) => impact::air_cushion_statement(f, points, "auto"),
+            Some(choice) => impact::air_cushion_statement(f, points, choice),
             None => impact::air_cushion_warning(f, points),
         });
     }

@@ -289,6 +289,30 @@ impl SweepFile {
         Ok(Self { src, raw })
     }
 
+    /// The value of the keyword `key` (`default` when absent) among `options`; any other word is an
+    /// error at its place that lists them.
+    fn keyword<T: Copy>(
+        &self,
+        v: &Option<Spanned<String>>,
+        key: &str,
+        default: T,
+        options: &[(&str, T)],
+    ) -> std::result::Result<T, InputError> {
+        let Some(v) = v else {
+            return Ok(default);
+        };
+        let word = v.get_ref().as_str();
+        if let Some((_, t)) = options.iter().find(|(name, _)| *name == word) {
+            return Ok(*t);
+        }
+        let names: Vec<String> = options.iter().map(|(n, _)| format!("\"{n}\"")).collect();
+        let list = match names.split_last() {
+            Some((last, rest)) if !rest.is_empty() => format!("{} or {last}", rest.join(", ")),
+            _ => names.concat(),
+        };
+        Err(self.error(v, format!("{key} = \"{word}\": use {list}")))
+    }
+
     pub fn error<T>(&self, v: &Spanned<T>, msg: impl Into<String>) -> InputError {
         self.src.error(v, msg)
     }
@@ -345,48 +369,36 @@ impl SweepFile {
                 stations.push(v);
             }
         }
-        let fidelity = match &r.fidelity {
-            None => Fidelity::Analytic,
-            Some(f) => match f.get_ref().as_str() {
-                "analytic" => Fidelity::Analytic,
-                "screen" => Fidelity::Screen,
-                "sph" => Fidelity::Sph,
-                other => {
-                    return Err(self.error(
-                        f,
-                        format!("fidelity = \"{other}\": use \"analytic\", \"screen\" or \"sph\""),
-                    ));
-                }
-            },
-        };
-        let resolution = match &r.resolution {
-            None => Level::Coarse,
-            Some(f) => match f.get_ref().as_str() {
-                "coarse" => Level::Coarse,
-                "medium" => Level::Medium,
-                "fine" => Level::Fine,
-                other => {
-                    return Err(self.error(
-                        f,
-                        format!("resolution = \"{other}\": use \"coarse\", \"medium\" or \"fine\""),
-                    ));
-                }
-            },
-        };
-        let air = match &r.air {
-            None => AirChoice::Off,
-            Some(f) => match f.get_ref().as_str() {
-                "off" => AirChoice::Off,
-                "on" => AirChoice::On,
-                "auto" => AirChoice::Auto,
-                other => {
-                    return Err(self.error(
-                        f,
-                        format!("air = \"{other}\": use \"off\", \"on\" or \"auto\""),
-                    ));
-                }
-            },
-        };
+        let fidelity = self.keyword(
+            &r.fidelity,
+            "fidelity",
+            Fidelity::Analytic,
+            &[
+                ("analytic", Fidelity::Analytic),
+                ("screen", Fidelity::Screen),
+                ("sph", Fidelity::Sph),
+            ],
+        )?;
+        let resolution = self.keyword(
+            &r.resolution,
+            "resolution",
+            Level::Coarse,
+            &[
+                ("coarse", Level::Coarse),
+                ("medium", Level::Medium),
+                ("fine", Level::Fine),
+            ],
+        )?;
+        let air = self.keyword(
+            &r.air,
+            "air",
+            AirChoice::Off,
+            &[
+                ("off", AirChoice::Off),
+                ("on", AirChoice::On),
+                ("auto", AirChoice::Auto),
+            ],
+        )?;
         let convergence_levels = match &r.convergence_levels {
             None => 2,
             Some(n) if (1..=3).contains(n.get_ref()) => *n.get_ref() as usize,
