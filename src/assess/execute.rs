@@ -155,13 +155,7 @@ fn record(key: &str, s: &RunSummary) -> SphRecord {
 /// Whether a run had air, and why: the air choice's note and the layer's (None when air was off; with
 /// `--air auto` on a section that did not need it, the note that says so).
 fn air_statement(s: &RunSummary) -> Option<String> {
-    let notes: Vec<&str> = s
-        .setup
-        .notes
-        .iter()
-        .filter(|n| n.starts_with("air"))
-        .map(String::as_str)
-        .collect();
+    let notes: Vec<&str> = sph::air::notes(&s.setup.notes).collect();
     (!notes.is_empty()).then(|| notes.join("; "))
 }
 

@@ -129,9 +129,7 @@ pub fn flat_keel_half_width(points: &[[f64; 2]]) -> f64 {
 /// otherwise): air trapped under a flat bottom cushions the impact, which the single-phase models do not
 /// represent (Veen 2010 s. 6.3: SPH about twice Ochi's measured peaks at the flat 0.174 Lpp section).
 pub fn air_cushion_warning(aft_of_fp: f64, points: &[[f64; 2]]) -> Option<String> {
-    let flat = flat_keel_half_width(points);
-    let widest = points.iter().map(|p| p[0]).fold(0.0, f64::max);
-    (flat > 0.0 && flat >= 0.05 * widest).then(|| {
+    significant_flat_keel(points).map(|flat| {
         let mut w = format!(
             "station {aft_of_fp} Lpp has a flat keel (half-width {flat:.4} m): its bottom impact is \
              acoustic, which single-phase SPH with an artificial sound speed does not compute, and the \
@@ -158,9 +156,7 @@ pub fn air_cushion_warning(aft_of_fp: f64, points: &[[f64; 2]]) -> Option<String
 /// The statement that replaces [`air_cushion_warning`] when the station's SPH runs have air (`--air on`,
 /// or `auto`, which turns air on for every flat keel): None without a flat keel.
 pub fn air_cushion_statement(aft_of_fp: f64, points: &[[f64; 2]], choice: &str) -> Option<String> {
-    let flat = flat_keel_half_width(points);
-    let widest = points.iter().map(|p| p[0]).fold(0.0, f64::max);
-    (flat > 0.0 && flat >= 0.05 * widest).then(|| {
+    significant_flat_keel(points).map(|flat| {
         format!(
             "station {aft_of_fp} Lpp has a flat keel (half-width {flat:.4} m): its SPH runs have air as a \
              second phase (--air {choice}), so the design values of the panels on the flat are the peaks of \
@@ -169,6 +165,14 @@ pub fn air_cushion_statement(aft_of_fp: f64, points: &[[f64; 2]], choice: &str) 
              two-phase model's validation is in docs/guide/air.md"
         )
     })
+}
+
+/// The half-width (m) of a flat keel that the warning and the statement name: a flat at least 5 % of the
+/// contour's widest half-breadth (narrower flats are a keel plate's rounding, not a flat bottom).
+fn significant_flat_keel(points: &[[f64; 2]]) -> Option<f64> {
+    let flat = flat_keel_half_width(points);
+    let widest = points.iter().map(|p| p[0]).fold(0.0, f64::max);
+    (flat > 0.0 && flat >= 0.05 * widest).then_some(flat)
 }
 
 /// Deadrise below which the water meets the hull through a cushion of air (deg): about 15-20 deg

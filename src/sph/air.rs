@@ -14,8 +14,8 @@
 //!
 //! with rho_a the density at p_a (1.204 kg/m3 at 20 deg C and 101 325 Pa) and the sound speed
 //! c_a = sqrt(gamma p_a / rho_a) = 343 m/s. The air is not given an artificial sound speed: its
-//! compressibility is the physics of the cushion (Verhagen 1967), so the time step follows c_a where it
-//! exceeds the water's c0.
+//! compressibility is the physics of the cushion (Verhagen 1967), so the air takes its own time steps,
+//! limited by c_a, within the water's step ([`crate::sph::solver`], multiple time stepping).
 //!
 //! **Pair terms between the phases.** The scheme is the low-dissipation Riemann SPH of the water
 //! ([`crate::sph::riemann`]; Zhang, Hu & Adams 2017). For a pair of particles of different phases the
@@ -128,19 +128,40 @@ pub fn auto_needs_air(half: &[[f64; 2]], wetted_half_width: f64) -> (bool, Strin
         return (
             false,
             format!(
-                "air auto: no contour within the expected wetted half-width {wetted_half_width:.3} m rises outward; water only"
+                "{AUTO_NOTE} no contour within the expected wetted half-width {wetted_half_width:.3} m rises outward; water only"
             ),
         );
     }
     let on = least < AUTO_DEADRISE_DEG;
     let why = format!(
-        "air auto: smallest deadrise {least:.1} deg within the expected wetted half-width {wetted_half_width:.3} m, \
+        "{AUTO_NOTE} smallest deadrise {least:.1} deg within the expected wetted half-width {wetted_half_width:.3} m, \
          {} the {AUTO_DEADRISE_DEG} deg below which an air cushion forms: {}",
         if on { "below" } else { "not below" },
         if on { "with air" } else { "water only" }
     );
     (on, why)
 }
+
+/// The note of a run's setup ([`crate::sph::case::Setup::notes`]) that says whether the run has air and
+/// why: `air: on (given)` or the `air auto: ...` of [`auto_needs_air`]; `None` when air was off.
+pub fn decision_note<S: AsRef<str>>(notes: &[S]) -> Option<&str> {
+    notes
+        .iter()
+        .map(AsRef::as_ref)
+        .find(|n| n.starts_with(AUTO_NOTE) || n.starts_with(ON_NOTE))
+}
+
+/// The notes of a run's setup about its air: the decision ([`decision_note`]), the layer and the gap.
+pub fn notes<S: AsRef<str>>(notes: &[S]) -> impl Iterator<Item = &str> {
+    notes
+        .iter()
+        .map(AsRef::as_ref)
+        .filter(|n| n.starts_with("air"))
+}
+
+/// How the decision notes start.
+pub const AUTO_NOTE: &str = "air auto:";
+pub const ON_NOTE: &str = "air: on";
 
 /// The air of a two-phase run: its equation of state and where its particles start.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]

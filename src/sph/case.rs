@@ -496,7 +496,7 @@ fn resolve_air(
         }
         AirChoice::Off => return Ok(None),
         AirChoice::On => {
-            notes.push("air: on (given)".into());
+            notes.push(format!("{} (given)", air::ON_NOTE));
             true
         }
         AirChoice::Auto => {
@@ -527,7 +527,7 @@ fn resolve_air(
     notes.push(format!(
         "air layer: {half_width:.3} m half-width, {height:.3} m over the calm surface (the section's height above \
          the water at the start, its clearance and 3 dp); standard air, {:.3} kg/m3, {:.0} Pa, gamma {}, sound \
-         speed {:.0} m/s (the time step follows the larger of it and c0)",
+         speed {:.0} m/s (the air takes its own substeps, limited by it, within the water's time step)",
         phase.rho0, phase.p_atm, phase.gamma, phase.c
     ));
     if clearance > 0.0 {

@@ -71,8 +71,8 @@ pub fn estimate(setup: &Setup, plan: StudyPlan, threads: usize) -> Estimate {
         b.half_width.min(setup.tank_half_width) * b.depth.min(setup.tank_depth)
     });
     let water = (fine + 0.25 * (area - fine)) / (setup.dp * setup.dp) * sides;
-    // Air: its layer at the base spacing, the time step set by the larger of its sound speed and c0,
-    // and the approach through the air gap before t = 0.
+    // Air: its layer at the base spacing, its own substeps within the water's step (the ratio of the
+    // two acoustic limits, [`crate::sph::solver`]), and the approach through the air gap before t = 0.
     let air = setup.air.as_ref();
     let air_particles = air.map_or(0.0, |a| {
         a.half_width.min(setup.tank_half_width) * a.height / (setup.dp * setup.dp) * sides
@@ -90,18 +90,22 @@ pub fn estimate(setup: &Setup, plan: StudyPlan, threads: usize) -> Estimate {
         .as_ref()
         .and_then(|m| m.build().ok())
         .map_or(0.0, |m| m.max_speed(setup.t_end));
-    let c = air.map_or(setup.c0, |a| setup.c0.max(a.phase().c));
-    let dt = setup.cfl * setup.h_over_dp * setup.dp / (c + 1.5 * v);
+    let dt = setup.cfl * setup.h_over_dp * setup.dp / (setup.c0 + 1.5 * v);
+    let substeps = air.map_or(1.0, |a| {
+        ((a.phase().c + 1.5 * v) / (setup.c0 + 1.5 * v)).ceil()
+    });
     let approach = match air {
         Some(a) if v > 0.0 => a.clearance / v,
         _ => 0.0,
     };
     let steps = ((setup.t_end + approach) / dt).ceil();
+    // every particle once a step, the air once more in each further substep
+    let per_step = fluid + (substeps - 1.0).max(0.0) * air_particles;
     // A companion at r times the spacing has 1/r^2 of the particles and 1/r of the steps.
     let companions: f64 = (1..plan.levels)
         .map(|k| plan.ratio.powi(-3 * k as i32))
         .sum();
-    let particle_steps = fluid * steps * (1.0 + companions);
+    let particle_steps = per_step * steps * (1.0 + companions);
     let threads = threads.max(1);
     Estimate {
         fluid_particles: fluid,

@@ -130,3 +130,89 @@ pub fn time_step(cfl: f64, h: f64, c0: f64, v_max: f64, a_max: f64) -> f64 {
     };
     dt_c.min(dt_f)
 }
+
+/// [`kick`] of the fluid particles of one phase only (`Kind::Fluid` for the water, `Kind::Air`), for the
+/// air's own time step ([`crate::sph::solver`]'s substeps).
+pub fn kick_phase(pt: &mut Particles, dt: f64, phase: Kind) {
+    let hdt = 0.5 * dt;
+    (
+        pt.vy.par_iter_mut(),
+        pt.vz.par_iter_mut(),
+        pt.kind.par_iter(),
+        pt.rate.par_iter(),
+    )
+        .into_par_iter()
+        .with_min_len(4096)
+        .for_each(|(vy, vz, kind, r)| {
+            if *kind == phase {
+                *vy += hdt * r[0];
+                *vz += hdt * r[1];
+            }
+        });
+}
+
+/// The drift of an air substep: the air's positions and densities by `dt` ([`drift`]), and the water's
+/// positions alone (its density takes its whole step at once, [`density_step`], while its positions
+/// move in the air's substeps).
+pub fn drift_air_substep(pt: &mut Particles, dt: f64, mirror: bool) {
+    (
+        pt.y.par_iter_mut(),
+        pt.z.par_iter_mut(),
+        pt.vy.par_iter_mut(),
+        pt.vz.par_iter(),
+        pt.rho.par_iter_mut(),
+        pt.kind.par_iter(),
+        pt.rate.par_iter(),
+    )
+        .into_par_iter()
+        .with_min_len(4096)
+        .for_each(|(y, z, vy, vz, rho, kind, r)| {
+            match kind {
+                Kind::Air => *rho += dt * r[2],
+                Kind::Fluid => {}
+                _ => return,
+            }
+            *y += dt * *vy;
+            *z += dt * *vz;
+            if mirror && *y < 0.0 {
+                *y = -*y;
+                *vy = -*vy;
+            }
+        });
+}
+
+/// The density step of one phase alone (`rho += dt rate[2]`), the positions left where they are.
+pub fn density_step(pt: &mut Particles, dt: f64, phase: Kind) {
+    (
+        pt.rho.par_iter_mut(),
+        pt.kind.par_iter(),
+        pt.rate.par_iter(),
+    )
+        .into_par_iter()
+        .with_min_len(4096)
+        .for_each(|(rho, kind, r)| {
+            if *kind == phase {
+                *rho += dt * r[2];
+            }
+        });
+}
+
+/// [`max_speed_accel`] over the particles of one phase.
+pub fn max_speed_accel_of(pt: &Particles, phase: Kind) -> (f64, f64) {
+    let (v2, a2) = (
+        pt.vy.par_iter(),
+        pt.vz.par_iter(),
+        pt.rate.par_iter(),
+        pt.kind.par_iter(),
+    )
+        .into_par_iter()
+        .with_min_len(4096)
+        .map(|(vy, vz, r, k)| {
+            if *k != phase {
+                return (0.0, 0.0);
+            }
+            (vy * vy + vz * vz, r[0] * r[0] + r[1] * r[1])
+        })
+        .reduce(|| (0.0, 0.0), |a, b| (nan_max(a.0, b.0), nan_max(a.1, b.1)));
+    (v2.sqrt(), a2.sqrt())
+}

@@ -143,6 +143,24 @@ impl Particles {
     /// Reorder the state arrays so that new position k holds old particle `order[k]`. Rates and gradients
     /// are recomputed after every sort and are not carried over (volumes are, for the first pass after
     /// the sort).
+    /// The pressures of the water and air particles from their densities (`pressure(kind, rho)`), the
+    /// dummies' left as they are.
+    pub fn update_fluid_pressures(&mut self, pressure: impl Fn(Kind, f64) -> f64 + Sync) {
+        use rayon::prelude::*;
+        (
+            self.p.par_iter_mut(),
+            self.rho.par_iter(),
+            self.kind.par_iter(),
+        )
+            .into_par_iter()
+            .with_min_len(4096)
+            .for_each(|(p, rho, kind)| {
+                if kind.is_fluid() {
+                    *p = pressure(*kind, *rho);
+                }
+            });
+    }
+
     pub fn permute(&mut self, order: &[u32]) {
         for a in [
             &mut self.y,

@@ -100,9 +100,14 @@ impl<'a> RunPhases<'a> {
         self.air = air;
         if air && self.flat_keel() {
             // the flat keel meets the water through the air cushion: no acoustic contact transient
-            self.transient_end_s = self.history.t.first().copied().unwrap_or(0.0).min(0.0);
+            self.transient_end_s = self.run_start();
         }
         self
+    }
+
+    /// The run's first time (s), or 0 when it starts after the keel's contact.
+    fn run_start(&self) -> f64 {
+        self.history.t.first().copied().unwrap_or(0.0).min(0.0)
     }
 
     /// The keel is flat: Wagner's contact starts at the water-hammer limit.
@@ -158,11 +163,11 @@ impl<'a> RunPhases<'a> {
         let k_lo = w.half_width.iter().position(|&c| c >= y_lo).unwrap_or(0);
         let on_flat = self.d0 == 0.0 && w.acoustic_limited.get(k_lo).copied().unwrap_or(false);
         if (acoustic || on_flat) && self.air && self.flat_keel() {
-            let t_start = self.history.t.first().copied().unwrap_or(0.0).min(0.0);
+            // `with_air` ended the transient at the run's start
             return Expectation {
-                window: Some(ImpactWindow::cushioned(t_start, t_hi, self.dp, v)),
+                window: Some(ImpactWindow::cushioned(self.run_start(), t_hi, self.dp, v)),
                 status: ImpactStatus::Cushioned,
-                transient_end_s: t_start.min(self.transient_end_s),
+                transient_end_s: self.transient_end_s,
                 crossing_half_width_m: Some(y_hi),
             };
         }

@@ -44,7 +44,9 @@ use crate::sph::refinement::{self, PairKernels};
 use crate::sph::sensors::{History, SensorSet};
 use crate::sph::shifting::Shifting;
 use crate::sph::tank::Tank;
-use crate::sph::two_phase_pass;
+use crate::sph::two_phase_pass::{self, Rows};
+
+mod air_substeps;
 
 /// Fraction of full support (Shepard sum of a fully wetted flat wall is about 1/2) below which a wall
 /// point counts as dry and gets zero pressure.
@@ -315,7 +317,7 @@ impl Simulation {
         let s = &self.setup;
         match &self.air {
             Some(air) => self.counters.time(Stage::Continuity, || {
-                two_phase_pass::continuity_rates(lists, pt, s, air)
+                two_phase_pass::continuity_rates(lists, pt, s, air, Rows::AllFluid)
             }),
             None => self
                 .counters
@@ -343,7 +345,9 @@ impl Simulation {
         let s = &self.setup;
         let lists = &mut self.lists;
         let n = self.counters.time(Stage::Momentum, || match air {
-            Some(a) => two_phase_pass::momentum_rates(grid, lists, pt, kernel, s, a),
+            Some(a) => {
+                two_phase_pass::momentum_rates(grid, lists, pt, kernel, s, a, Rows::AllFluid)
+            }
             None => momentum_rates(grid, lists, pt, kernel, s),
         });
         self.counters.interactions += n;
@@ -455,6 +459,9 @@ impl Simulation {
     /// Advance one time step. An `Err` describes why the run cannot go on (the state is left as it was at
     /// the failure, for inspection).
     pub fn step(&mut self) -> std::result::Result<(), String> {
+        if self.air.is_some() {
+            return self.step_with_air_substeps();
+        }
         let h = self.kernel.h();
         let (v_max, a_max) = integrator::max_speed_accel(&self.pt);
         if !v_max.is_finite() || !a_max.is_finite() {
@@ -468,28 +475,14 @@ impl Simulation {
             a_max,
         );
         if dt < 1e-3 * self.dt_first {
-            let (at, kind) = self.fastest_fluid_particle();
-            return Err(format!(
-                "time step collapsed to {dt:.3e} s (first step {:.3e} s): largest fluid speed {v_max:.3} m/s, {} \
-                 particle at (y, z) = ({:.4}, {:.4}) m (keel at z = {:.4} m), largest acceleration {a_max:.3e} m/s^2",
-                self.dt_first,
-                kind_name(kind),
-                at[0],
-                at[1],
-                self.body.z_keel
-            ));
+            return Err(self.collapse_diagnostic(dt, v_max, a_max));
         }
         self.dt = dt;
         let t_mid = self.time + 0.5 * dt;
         let t_new = self.time + dt;
         let t0 = std::time::Instant::now();
         integrator::kick(&mut self.pt, dt);
-        let v_half = match &self.motion {
-            Some(m) => m
-                .speed_at(t_mid)
-                .unwrap_or(self.body.v_down + 0.5 * dt * self.body.a_down),
-            None => 0.0,
-        };
+        let v_half = self.body_half_step_speed(t_mid, dt);
         if self.motion.is_some() {
             integrator::move_body(&mut self.pt, 0.0, 0.0, [0.0, -v_half]);
         }
@@ -529,6 +522,43 @@ impl Simulation {
         self.sample_body();
         let t0 = std::time::Instant::now();
         integrator::kick(&mut self.pt, dt);
+        self.update_body_speed(v_half, dt, t_new);
+        self.counters.add(Stage::Integrate, t0.elapsed());
+        self.steps += 1;
+        self.counters.steps += 1;
+        self.counters.particle_steps += self.pt.len() as u64;
+        self.record();
+        Ok(())
+    }
+
+    /// Why the run stopped when its time step `dt` fell below a thousandth of the first one.
+    fn collapse_diagnostic(&self, dt: f64, v_max: f64, a_max: f64) -> String {
+        let (at, kind) = self.fastest_fluid_particle();
+        format!(
+            "time step collapsed to {dt:.3e} s (first step {:.3e} s): largest fluid speed {v_max:.3} m/s, {} \
+             particle at (y, z) = ({:.4}, {:.4}) m (keel at z = {:.4} m), largest acceleration {a_max:.3e} m/s^2",
+            self.dt_first,
+            kind_name(kind),
+            at[0],
+            at[1],
+            self.body.z_keel
+        )
+    }
+
+    /// The body's downward speed over the step of length `dt` whose middle is `t_mid`: the prescribed
+    /// one, or the free body's speed half a step on.
+    fn body_half_step_speed(&self, t_mid: f64, dt: f64) -> f64 {
+        match &self.motion {
+            Some(m) => m
+                .speed_at(t_mid)
+                .unwrap_or(self.body.v_down + 0.5 * dt * self.body.a_down),
+            None => 0.0,
+        }
+    }
+
+    /// The body's speed at the end of the step (`t_new`), after the force at the new positions: a
+    /// free body's from its half-step speed `v_half` and the new acceleration.
+    fn update_body_speed(&mut self, v_half: f64, dt: f64, t_new: f64) {
         if let Some(m) = &self.motion {
             match m {
                 Motion::FreeHeave { mass_per_m, .. } => {
@@ -538,12 +568,6 @@ impl Simulation {
                 _ => self.body.v_down = m.speed_at(t_new).unwrap_or(v_half),
             }
         }
-        self.counters.add(Stage::Integrate, t0.elapsed());
-        self.steps += 1;
-        self.counters.steps += 1;
-        self.counters.particle_steps += self.pt.len() as u64;
-        self.record();
-        Ok(())
     }
 
     /// Run until `t_stop` (or the first failure). `progress` is called every `every` steps.

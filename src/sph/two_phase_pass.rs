@@ -132,9 +132,29 @@ fn pressure_sum(ph: &Phases, ki: Kind, p_i: f64, rho_i: f64, q: &Pair) -> f64 {
     }
 }
 
+/// Which particles a pass computes: every fluid particle, or the air alone (the air's substeps,
+/// [`crate::sph::solver`]), whose rows of the other particles are left as they were and whose lists
+/// are empty for them.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub enum Rows {
+    AllFluid,
+    AirOnly,
+}
+
+impl Rows {
+    #[inline(always)]
+    fn skips(self, k: Kind) -> bool {
+        match self {
+            Rows::AllFluid => !k.is_fluid(),
+            Rows::AirOnly => k != Kind::Air,
+        }
+    }
+}
+
 /// Accelerations of the water and air particles into `rate[i][0..2]` (the density gradients are not
 /// used with air and are zeroed), with one neighbour search a particle whose pairs are kept in `lists`;
-/// returns the number of pair interactions.
+/// returns the number of pair interactions. With [`Rows::AirOnly`] only the air's rows are computed
+/// and searched, the other rows of `rate` are left as they were.
 pub fn momentum_rates(
     grid: &Grid,
     lists: &mut NeighbourLists,
@@ -142,6 +162,7 @@ pub fn momentum_rates(
     kernel: &WendlandC2,
     s: &Setup,
     air: &AirPhase,
+    rows: Rows,
 ) -> u64 {
     let multi = pt.multi_resolution();
     let pair_kernel = PairKernel::new(kernel, multi);
@@ -161,8 +182,10 @@ pub fn momentum_rates(
                 for (k, out) in out.iter_mut().enumerate() {
                     let i = c * LIST_CHUNK + k;
                     let ki = pt.kind[i];
-                    if !ki.is_fluid() {
-                        *out = [0.0; 3];
+                    if rows.skips(ki) {
+                        if !ki.is_fluid() {
+                            *out = [0.0; 3];
+                        }
                         list.end_particle();
                         continue;
                     }
@@ -188,8 +211,10 @@ pub fn momentum_rates(
             .sum()
     };
     pt.rate = out;
-    for g in pt.grad_rho.iter_mut() {
-        *g = [0.0; 2];
+    if rows == Rows::AllFluid {
+        for g in pt.grad_rho.iter_mut() {
+            *g = [0.0; 2];
+        }
     }
     n
 }
@@ -227,8 +252,14 @@ fn search(
 
 /// Density rates of the water and air particles into `rate[i][2]`, over the neighbour lists of the last
 /// momentum pass (at the same positions, densities and pressures; only the velocities have been kicked
-/// since).
-pub fn continuity_rates(lists: &NeighbourLists, pt: &mut Particles, s: &Setup, air: &AirPhase) {
+/// since). With [`Rows::AirOnly`] only the air's rows.
+pub fn continuity_rates(
+    lists: &NeighbourLists,
+    pt: &mut Particles,
+    s: &Setup,
+    air: &AirPhase,
+    rows: Rows,
+) {
     let ph = Phases::new(s, air);
     let pair_kernel = lists
         .kernel
@@ -243,8 +274,10 @@ pub fn continuity_rates(lists: &NeighbourLists, pt: &mut Particles, s: &Setup, a
                 for (k, out) in out.iter_mut().enumerate() {
                     let i = c * LIST_CHUNK + k;
                     let ki = pt.kind[i];
-                    if !ki.is_fluid() {
-                        out[2] = 0.0;
+                    if rows.skips(ki) {
+                        if !ki.is_fluid() {
+                            out[2] = 0.0;
+                        }
                         continue;
                     }
                     let (yi, zi, vyi, vzi) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i]);

@@ -462,13 +462,13 @@ fn air_text(saved: &Saved) -> String {
             speed_text(num(e, "speed_m_per_s")),
             text(e, "wave")
         );
-        let why = st["notes"]
+        let notes: Vec<&str> = st["notes"]
             .as_array()
             .into_iter()
             .flatten()
             .filter_map(serde_json::Value::as_str)
-            .find(|n| n.starts_with("air auto:") || n.starts_with("air: on"))
-            .map(str::to_string);
+            .collect();
+        let why = crate::sph::air::decision_note(&notes).map(str::to_string);
         if st["air"].is_object() {
             with.push(format!(
                 "{what}: {}",
