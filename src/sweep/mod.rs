@@ -39,10 +39,16 @@ use crate::progress::ProgressHandle;
 
 /// Read, check and run the sweep file at `path` with `opts`, writing the results into `opts.out`.
 pub fn run(path: &Path, opts: &Options, progress: &ProgressHandle) -> Result<SweepResult> {
-    // Say how big the sweep is before the (possibly long) preparation starts.
+    // Say how big a large sweep is before its (possibly long) preparation starts; a small one once its
+    // preparation has checked it, so that an error in the file is not preceded by its size.
     let n = cases::expand(&file::SweepFile::read(path)?)?.len();
-    progress.note(&size_note(n));
+    if n >= LARGE_SWEEP {
+        progress.note(&size_note(n));
+    }
     let p = prepare::prepare(path, &opts.out)?;
+    if n < LARGE_SWEEP {
+        progress.note(&size_note(n));
+    }
     execute::run(&p, opts, progress)
 }
 
@@ -64,7 +70,8 @@ pub fn size_note(cases: usize) -> String {
             cases as f64 * ANALYTIC_CASE_CPU_S / 3600.0
         )
     } else {
-        format!("{cases} cases to prepare and run")
+        let s = if cases == 1 { "" } else { "s" };
+        format!("{cases} case{s} to prepare and run")
     }
 }
 
@@ -75,6 +82,7 @@ mod tests {
     #[test]
     fn a_large_sweep_states_its_cost() {
         assert_eq!(size_note(8), "8 cases to prepare and run");
+        assert_eq!(size_note(1), "1 case to prepare and run");
         let n = size_note(1_000_000);
         assert!(n.contains("at least 27.8 CPU hours"), "{n}");
     }
