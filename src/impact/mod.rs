@@ -159,10 +159,13 @@ pub fn air_cushion_statement(aft_of_fp: f64, points: &[[f64; 2]], choice: &str) 
     significant_flat_keel(points).map(|flat| {
         format!(
             "station {aft_of_fp} Lpp has a flat keel (half-width {flat:.4} m): its SPH runs have air as a \
-             second phase (--air {choice}), so the design values of the panels on the flat are the peaks of \
-             the air-cushioned impact the two-phase run computes (their source says \"sph with air\"); the \
-             analytic models give no peak there, so those values have no analytic cross-check, and the \
-             two-phase model's validation is in docs/guide/air.md"
+             second phase (--air {choice}), and the peaks of the panels on the flat are those of the \
+             air-cushioned impact the two-phase run computes, but they are not design values: on a flat \
+             keel the two-phase peak grows with the water's artificial sound speed (doubling c0 raised it by \
+             half to four fifths in the measurements of docs/guide/air.md), so it measures the numerical \
+             water's compressibility more than the cushion; the panels on the flat keep no design value, \
+             the water-hammer pressure rho c_w V stays the upper bound, and the analytic models give no \
+             peak there"
         )
     })
 }
