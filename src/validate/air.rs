@@ -107,7 +107,7 @@ pub fn single_phase_limit(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcom
     let section = Section::wedge(beta, b, 1.5 * b * beta.tan())?;
     let t_end = t_frac * chine_wetting_time(beta, b, speed);
     let deg = beta.to_degrees();
-    let run = |air, c0| {
+    let run = |air| {
         entry(
             memo,
             &format!("wedge{deg}/{b}"),
@@ -118,10 +118,10 @@ pub fn single_phase_limit(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcom
             n,
             &sensors,
             air,
-            c0,
+            None,
         )
     };
-    let (w, a) = (run(false, None)?, run(true, None)?);
+    let (w, a) = (run(false)?, run(true)?);
     let side = b / beta.cos();
     let mut rows = Vec::new();
     let mut worst: f64 = 0.0;
