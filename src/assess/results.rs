@@ -172,11 +172,11 @@ pub fn sensor_warnings(r: &SphRecord, analytic: Option<&Estimate>) -> Vec<String
     let cushioned = group(ImpactStatus::Cushioned);
     if !cushioned.is_empty() {
         out.push(format!(
-            "sensors {}: on the flat keel, computed with air (a two-phase run): their slamming peaks are the \
-             air cushion's, taken from the start of the run (the keel's approach through the air gap) to the \
-             end of the widened analytic crossing; no analytic model computes a cushioned impact, so these \
-             peaks have no analytic cross-check (docs/guide/air.md states what the two-phase model is \
-             validated against)",
+            "sensors {}: on the flat keel, computed with air (a two-phase run): their slamming peaks are those \
+             of the two-phase model's cushioned impact, taken from the start of the run (the keel's approach \
+             through the air gap) to the end of the widened analytic crossing; they grow with the water's \
+             artificial sound speed (docs/guide/air.md), so they are not design values, and no analytic \
+             model computes a cushioned impact to cross-check them",
             cushioned.join(", ")
         ));
     }

@@ -103,9 +103,13 @@ fn time_run(setup: Setup, steps: u64) -> slamtool::Result<Timing> {
     let c0 = sim.counters.clone();
     let time0 = sim.time;
     let t0 = std::time::Instant::now();
-    for _ in 0..steps {
-        sim.step().map_err(|e| sim.failure(&e))?;
-    }
+    // On a thread of rayon's pool, as `sph::run` steps a run.
+    rayon::scope(|_| -> slamtool::Result<()> {
+        for _ in 0..steps {
+            sim.step().map_err(|e| sim.failure(&e))?;
+        }
+        Ok(())
+    })?;
     let secs = t0.elapsed().as_secs_f64();
     let c = &sim.counters;
     let stages = serde_json::json!({

@@ -19,8 +19,20 @@ use rayon::prelude::*;
 
 use crate::sph::particles::{Kind, Particles};
 
-/// Half kick of the fluid velocities with the current accelerations.
+/// Half kick of the fluid velocities (water and air) with the current accelerations.
 pub fn kick(pt: &mut Particles, dt: f64) {
+    kick_where(pt, dt, Kind::is_fluid);
+}
+
+/// [`kick`] of the fluid particles of one phase only (`Kind::Fluid` for the water, `Kind::Air`), for the
+/// air's own time step ([`crate::sph::solver`]'s substeps).
+pub fn kick_phase(pt: &mut Particles, dt: f64, phase: Kind) {
+    kick_where(pt, dt, |k| k == phase);
+}
+
+/// Half kick by `dt` of the particles whose kind `moves`.
+#[inline(always)]
+fn kick_where(pt: &mut Particles, dt: f64, moves: impl Fn(Kind) -> bool + Sync) {
     let hdt = 0.5 * dt;
     (
         pt.vy.par_iter_mut(),
@@ -31,7 +43,7 @@ pub fn kick(pt: &mut Particles, dt: f64) {
         .into_par_iter()
         .with_min_len(4096)
         .for_each(|(vy, vz, kind, r)| {
-            if kind.is_fluid() {
+            if moves(*kind) {
                 *vy += hdt * r[0];
                 *vz += hdt * r[1];
             }
@@ -87,9 +99,20 @@ pub fn move_body(pt: &mut Particles, dy: f64, dz: f64, vel: [f64; 2]) {
         });
 }
 
-/// Largest fluid (water or air) speed and acceleration magnitude. NaN if any fluid particle has a non-finite state
-/// (max is exact, so the result does not depend on the thread count).
+/// Largest fluid (water or air) speed and acceleration magnitude. NaN if any fluid particle has a
+/// non-finite state (max is exact, so the result does not depend on the thread count).
 pub fn max_speed_accel(pt: &Particles) -> (f64, f64) {
+    max_speed_accel_where(pt, Kind::is_fluid)
+}
+
+/// [`max_speed_accel`] over the particles of one phase.
+pub fn max_speed_accel_of(pt: &Particles, phase: Kind) -> (f64, f64) {
+    max_speed_accel_where(pt, |k| k == phase)
+}
+
+/// Largest speed and acceleration magnitude of the particles whose kind is `counted`.
+#[inline(always)]
+fn max_speed_accel_where(pt: &Particles, counted: impl Fn(Kind) -> bool + Sync) -> (f64, f64) {
     let (v2, a2) = (
         pt.vy.par_iter(),
         pt.vz.par_iter(),
@@ -99,12 +122,10 @@ pub fn max_speed_accel(pt: &Particles) -> (f64, f64) {
         .into_par_iter()
         .with_min_len(4096)
         .map(|(vy, vz, r, k)| {
-            if !k.is_fluid() {
+            if !counted(*k) {
                 return (0.0, 0.0);
             }
-            let v2 = vy * vy + vz * vz;
-            let a2 = r[0] * r[0] + r[1] * r[1];
-            (v2, a2)
+            (vy * vy + vz * vz, r[0] * r[0] + r[1] * r[1])
         })
         .reduce(|| (0.0, 0.0), |a, b| (nan_max(a.0, b.0), nan_max(a.1, b.1)));
     (v2.sqrt(), a2.sqrt())
@@ -129,26 +150,6 @@ pub fn time_step(cfl: f64, h: f64, c0: f64, v_max: f64, a_max: f64) -> f64 {
         f64::INFINITY
     };
     dt_c.min(dt_f)
-}
-
-/// [`kick`] of the fluid particles of one phase only (`Kind::Fluid` for the water, `Kind::Air`), for the
-/// air's own time step ([`crate::sph::solver`]'s substeps).
-pub fn kick_phase(pt: &mut Particles, dt: f64, phase: Kind) {
-    let hdt = 0.5 * dt;
-    (
-        pt.vy.par_iter_mut(),
-        pt.vz.par_iter_mut(),
-        pt.kind.par_iter(),
-        pt.rate.par_iter(),
-    )
-        .into_par_iter()
-        .with_min_len(4096)
-        .for_each(|(vy, vz, kind, r)| {
-            if *kind == phase {
-                *vy += hdt * r[0];
-                *vz += hdt * r[1];
-            }
-        });
 }
 
 /// The drift of an air substep: the air's positions and densities by `dt` ([`drift`]), and the water's
@@ -195,24 +196,4 @@ pub fn density_step(pt: &mut Particles, dt: f64, phase: Kind) {
                 *rho += dt * r[2];
             }
         });
-}
-
-/// [`max_speed_accel`] over the particles of one phase.
-pub fn max_speed_accel_of(pt: &Particles, phase: Kind) -> (f64, f64) {
-    let (v2, a2) = (
-        pt.vy.par_iter(),
-        pt.vz.par_iter(),
-        pt.rate.par_iter(),
-        pt.kind.par_iter(),
-    )
-        .into_par_iter()
-        .with_min_len(4096)
-        .map(|(vy, vz, r, k)| {
-            if *k != phase {
-                return (0.0, 0.0);
-            }
-            (vy * vy + vz * vz, r[0] * r[0] + r[1] * r[1])
-        })
-        .reduce(|| (0.0, 0.0), |a, b| (nan_max(a.0, b.0), nan_max(a.1, b.1)));
-    (v2.sqrt(), a2.sqrt())
 }

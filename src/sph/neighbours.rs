@@ -77,19 +77,16 @@ impl Grid {
             *h = level[r].iter().any(|&l| l > 0);
         }
         let k = MIXED_REACH;
-        // Separable dilation: along the rows, then along the columns.
+        // Separable dilation: along the rows, then along the columns, each with a running count of the
+        // marked cells in the window of 2k + 1 (one pass over the cells instead of 2k + 1).
         for iz in 0..nz {
-            for iy in 0..ny {
-                let (a, b) = (iy.saturating_sub(k), (iy + k).min(ny - 1));
-                rows[iz * ny + iy] = (a..=b).any(|x| has[iz * ny + x]);
-            }
+            let row = iz * ny;
+            dilate(ny, k, |x| has[row + x], |x, v| rows[row + x] = v);
         }
         self.near_coarse.resize(ny * nz, false);
-        for iz in 0..nz {
-            let (a, b) = (iz.saturating_sub(k), (iz + k).min(nz - 1));
-            for iy in 0..ny {
-                self.near_coarse[iz * ny + iy] = (a..=b).any(|x| rows[x * ny + iy]);
-            }
+        let near = &mut self.near_coarse;
+        for iy in 0..ny {
+            dilate(nz, k, |x| rows[x * ny + iy], |x, v| near[x * ny + iy] = v);
         }
         self.has_coarse = has;
         self.rows_coarse = rows;
@@ -273,6 +270,22 @@ impl Grid {
 /// Neighbours gathered per batch before the closure runs on them.
 const BATCH: usize = 32;
 
+/// One-dimensional dilation over n cells: `set(x, v)` with v whether any of `get(x - k ..= x + k)` (clipped
+/// to the cells) holds, by a running count of the marked cells in the window.
+#[inline]
+fn dilate(n: usize, k: usize, get: impl Fn(usize) -> bool, mut set: impl FnMut(usize, bool)) {
+    let mut count = (0..=k.min(n.saturating_sub(1))).filter(|&x| get(x)).count();
+    for x in 0..n {
+        set(x, count > 0);
+        if x + k + 1 < n && get(x + k + 1) {
+            count += 1;
+        }
+        if x >= k && get(x - k) {
+            count -= 1;
+        }
+    }
+}
+
 /// Visit every particle j within `support2` (squared support radius) of point (yi, zi), including mirror
 /// images. The closure gets (j, dy, dz, r2, mirrored) with (dy, dz) = r_i - r_j (r_j the image position when
 /// mirrored). Particle `skip` itself (not its image) is left out.
@@ -377,6 +390,23 @@ pub use crate::sph::neighbour_lists::{ChunkLists, LIST_CHUNK, NeighbourLists};
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_running_dilation_marks_what_the_window_test_marks() {
+        // Every pattern of 9 cells, windows of half-width 0 to 4 (wider than the row included).
+        for bits in 0u32..512 {
+            let n = 9;
+            let has = |x: usize| bits >> x & 1 == 1;
+            for k in 0..=10 {
+                let mut got = vec![false; n];
+                dilate(n, k, has, |x, v| got[x] = v);
+                for (x, g) in got.iter().enumerate() {
+                    let want = (x.saturating_sub(k)..=(x + k).min(n - 1)).any(has);
+                    assert_eq!(*g, want, "pattern {bits:09b}, k {k}, cell {x}");
+                }
+            }
+        }
+    }
 
     /// Points in the unit box (mirror plane at y = 0) sorted by cell on a grid of cells support/2.
     fn sorted_on_grid(y: &[f64], z: &[f64], support: f64) -> (Grid, Vec<f64>, Vec<f64>) {

@@ -80,6 +80,8 @@ pub struct Simulation {
     pub eos: Eos,
     /// The air of a two-phase run ([`crate::sph::air`]).
     pub air: Option<AirPhase>,
+    /// The number of air particles (fixed once the tank is filled: no particle changes its kind).
+    n_air: usize,
     /// Volume of a dummy particle, dp^2 (m^2).
     pub dummy_vol: f64,
     pub pt: Particles,
@@ -227,6 +229,7 @@ impl Simulation {
             kernel,
             eos,
             air,
+            n_air: pt.count(Kind::Air),
             pt,
             grid,
             lists: NeighbourLists::default(),
@@ -272,7 +275,7 @@ impl Simulation {
 
     /// Number of air particles.
     pub fn n_air(&self) -> usize {
-        self.pt.count(Kind::Air)
+        self.n_air
     }
 
     /// The largest sound speed of the run's phases: the water's c0, or the air's where it is larger

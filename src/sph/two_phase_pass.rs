@@ -4,12 +4,15 @@
 //! and body dummies the water's extrapolated wall pressure for a water particle and the particle's own
 //! pressure for an air particle (all stated in [`crate::sph::air`]).
 //!
-//! One plain pair loop a particle, without the batching of the single-phase passes
-//! ([`crate::sph::rates`]): a run with air is rare enough that its passes are kept simple, and the
-//! single-phase passes carry no test of the phase. As there, every sum is a gather over the neighbours of
-//! one particle in the fixed cell-sorted order, so the results are bit-identical on any thread count; the
-//! momentum pass builds the neighbour lists (flagging water and air alike as fluid) that the continuity
-//! pass, the body force and the force-panel sensors read.
+//! The passes are separate from the single-phase ones ([`crate::sph::rates`]), which carry no test of the
+//! phase. Their pair loops run over batches of neighbours (`AirBatch`): the offsets, distances, normal
+//! velocity differences and kernel factors lane by lane (vectorised, and compiled for AVX2 where the CPU
+//! has it), then the phase-dependent Riemann terms one by one; each quantity takes the operations of one
+//! pair at a time, so the histories are bit-identical to the plain loop this replaced (checked on Ochi
+//! 0.174 Lpp with air; 6-13 % faster there). As in the single-phase passes every sum is a gather over
+//! the neighbours of one particle in the fixed cell-sorted order, so the results are bit-identical on
+//! any thread count; the momentum pass builds the neighbour lists (flagging water and air alike as fluid)
+//! that the continuity pass, the body force and the force-panel sensors read.
 
 use rayon::prelude::*;
 
@@ -20,6 +23,7 @@ use crate::sph::neighbour_lists::{
     ChunkLists, LIST_CHUNK, NeighbourLists, PairKernel, mark_fluid, neighbour,
 };
 use crate::sph::neighbours::Grid;
+use crate::sph::pair_batch::has_avx2;
 use crate::sph::particles::{Kind, Particles};
 use crate::sph::refinement::PairKernels;
 use crate::sph::riemann;
@@ -82,34 +86,117 @@ struct Pair {
     kind: Kind,
     p: f64,
     rho: f64,
-    vol: f64,
 }
 
-/// The neighbour of list entry `tag` as seen from particle i at (yi, zi) moving at (vyi, vzi).
-#[inline(always)]
-fn pair_of(tag: u32, pt: &Particles, yi: f64, zi: f64, vyi: f64, vzi: f64) -> (usize, Pair) {
-    let (j, mirrored) = neighbour(tag);
-    let (dy, vyj) = if mirrored {
-        (yi + pt.y[j], -pt.vy[j])
-    } else {
-        (yi - pt.y[j], pt.vy[j])
-    };
-    let dz = zi - pt.z[j];
-    let r = (dy * dy + dz * dz).sqrt();
-    let vdotr = (vyi - vyj) * dy + (vzi - pt.vz[j]) * dz;
-    (
-        j,
+/// Neighbours per batch of the two-phase passes.
+const AIR_BATCH: usize = 8;
+
+/// A batch of neighbours j of particle i: gathered one by one (mirror images with y and v_y negated),
+/// then the offsets' lengths, the normal velocity differences and the kernel factors lane by lane, a
+/// loop without gathers or branches that the compiler vectorises; the pair terms that depend on the
+/// phases follow one by one. Every quantity takes the operations of a pair at a time, so the sums are
+/// bit-identical to a plain loop (as in [`crate::sph::pair_batch`]).
+#[derive(Clone, Copy)]
+struct AirBatch {
+    dy: [f64; AIR_BATCH],
+    dz: [f64; AIR_BATCH],
+    dvy: [f64; AIR_BATCH],
+    dvz: [f64; AIR_BATCH],
+    r: [f64; AIR_BATCH],
+    vdotr: [f64; AIR_BATCH],
+    fw: [f64; AIR_BATCH],
+    p: [f64; AIR_BATCH],
+    rho: [f64; AIR_BATCH],
+    vol: [f64; AIR_BATCH],
+    coarse: [bool; AIR_BATCH],
+    kind: [Kind; AIR_BATCH],
+}
+
+impl Default for AirBatch {
+    fn default() -> Self {
+        let z = [0.0; AIR_BATCH];
+        Self {
+            dy: z,
+            dz: z,
+            dvy: z,
+            dvz: z,
+            r: z,
+            vdotr: z,
+            fw: z,
+            p: z,
+            rho: z,
+            vol: z,
+            coarse: [false; AIR_BATCH],
+            kind: [Kind::Fluid; AIR_BATCH],
+        }
+    }
+}
+
+impl AirBatch {
+    /// Gather the neighbours of list entries `tags` (at most [`AIR_BATCH`]) of particle `i`.
+    #[inline(always)]
+    fn gather(&mut self, tags: &[u32], pt: &Particles, i: usize) {
+        let n = pt.y.len();
+        let (y, z, vy, vz) = (&pt.y[..n], &pt.z[..n], &pt.vy[..n], &pt.vz[..n]);
+        let (rho, p, vol, kind, level) = (
+            &pt.rho[..n],
+            &pt.p[..n],
+            &pt.vol[..n],
+            &pt.kind[..n],
+            &pt.level[..],
+        );
+        let (yi, zi, vyi, vzi) = (y[i], z[i], vy[i], vz[i]);
+        for (l, &t) in tags.iter().enumerate().take(AIR_BATCH) {
+            let (j, mirrored) = neighbour(t);
+            assert!(j < n);
+            let (dy, vyj) = if mirrored {
+                (yi + y[j], -vy[j])
+            } else {
+                (yi - y[j], vy[j])
+            };
+            self.dy[l] = dy;
+            self.dz[l] = zi - z[j];
+            self.dvy[l] = vyi - vyj;
+            self.dvz[l] = vzi - vz[j];
+            self.p[l] = p[j];
+            self.rho[l] = rho[j];
+            self.vol[l] = vol[j];
+            self.kind[l] = kind[j];
+            self.coarse[l] = level.get(j).is_some_and(|&v| v != 0);
+        }
+    }
+
+    /// |r_ij|, (v_i - v_j) . r_ij and F_ij V_j of every lane, for a particle of level `li`.
+    #[inline(always)]
+    fn geometry(&mut self, kernel: &PairKernel, li: u8) {
+        let (k0, k1) = (*kernel.pair(li, 0), *kernel.pair(li, 1));
+        for l in 0..AIR_BATCH {
+            let (dy, dz) = (self.dy[l], self.dz[l]);
+            let r = (dy * dy + dz * dz).sqrt();
+            self.r[l] = r;
+            self.vdotr[l] = self.dvy[l] * dy + self.dvz[l] * dz;
+            let f = if self.coarse[l] {
+                k1.grad_factor_lane(r)
+            } else {
+                k0.grad_factor_lane(r)
+            };
+            self.fw[l] = f * self.vol[l];
+        }
+    }
+
+    /// Lane `l` as a [`Pair`].
+    #[inline(always)]
+    fn pair(&self, l: usize) -> Pair {
         Pair {
-            dy,
-            dz,
-            r,
-            vdotr,
-            kind: pt.kind[j],
-            p: pt.p[j],
-            rho: pt.rho[j],
-            vol: pt.vol[j],
-        },
-    )
+            dy: self.dy[l],
+            dz: self.dz[l],
+            r: self.r[l],
+            vdotr: self.vdotr[l],
+            kind: self.kind[l],
+            p: self.p[l],
+            rho: self.rho[l],
+        }
+    }
 }
 
 /// 2 P* of the pair (i, j) for the momentum sum.
@@ -170,43 +257,30 @@ pub fn momentum_rates(
     lists.resize(pt.len());
     let ph = Phases::new(s, air);
     let pairs = PairKernels::new(kernel.h());
+    let avx2 = has_avx2();
     let mut out = std::mem::take(&mut pt.rate);
     let n = {
         let pt: &Particles = pt;
+        let ctx = MomentumChunk {
+            grid,
+            pt,
+            kernel,
+            pairs: &pairs,
+            pair_kernel: &pair_kernel,
+            ph: &ph,
+            rows,
+            multi,
+        };
         out.par_chunks_mut(LIST_CHUNK)
             .zip(lists.chunks.par_iter_mut())
             .enumerate()
             .map(|(c, (out, list))| {
-                list.clear();
-                let mut count = 0u64;
-                for (k, out) in out.iter_mut().enumerate() {
-                    let i = c * LIST_CHUNK + k;
-                    let ki = pt.kind[i];
-                    if rows.skips(ki) {
-                        if !ki.is_fluid() {
-                            *out = [0.0; 3];
-                        }
-                        list.end_particle();
-                        continue;
-                    }
-                    search(list, grid, pt, i, kernel, &pairs, multi);
-                    let (yi, zi, vyi, vzi) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i]);
-                    let (rho_i, p_i, li) = (pt.rho[i], pt.p[i], pt.level[i]);
-                    let (mut ay, mut az) = (0.0, 0.0);
-                    let entries = list.last_entries();
-                    count += entries.len() as u64;
-                    for t in entries.iter_mut() {
-                        let (j, q) = pair_of(*t, pt, yi, zi, vyi, vzi);
-                        mark_fluid(t, q.kind.is_fluid());
-                        let fw = pair_kernel.grad_factor(li, pt.level[j], q.r) * q.vol;
-                        let pf = pressure_sum(&ph, ki, p_i, rho_i, &q) * fw;
-                        ay -= pf * q.dy;
-                        az -= pf * q.dz;
-                    }
-                    list.end_particle();
-                    *out = [ay / rho_i, az / rho_i - ph.g, 0.0];
+                #[cfg(target_arch = "x86_64")]
+                if avx2 {
+                    // SAFETY: the CPU has AVX2 (checked at run time above).
+                    return unsafe { momentum_chunk_avx2(&ctx, c, out, list) };
                 }
-                count
+                momentum_chunk(&ctx, c, out, list)
             })
             .sum()
     };
@@ -217,6 +291,86 @@ pub fn momentum_rates(
         }
     }
     n
+}
+
+/// What a chunk of the two-phase momentum pass reads.
+struct MomentumChunk<'a> {
+    grid: &'a Grid,
+    pt: &'a Particles,
+    kernel: &'a WendlandC2,
+    pairs: &'a PairKernels,
+    pair_kernel: &'a PairKernel,
+    ph: &'a Phases,
+    rows: Rows,
+    multi: bool,
+}
+
+/// [`momentum_chunk`] compiled with AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn momentum_chunk_avx2(
+    ctx: &MomentumChunk,
+    c: usize,
+    out: &mut [[f64; 3]],
+    list: &mut ChunkLists,
+) -> u64 {
+    momentum_chunk(ctx, c, out, list)
+}
+
+/// The two-phase momentum pass over chunk `c` of the particles: search, list, pair sums.
+#[inline(always)]
+fn momentum_chunk(
+    ctx: &MomentumChunk,
+    c: usize,
+    out: &mut [[f64; 3]],
+    list: &mut ChunkLists,
+) -> u64 {
+    let MomentumChunk {
+        grid,
+        pt,
+        kernel,
+        pairs,
+        pair_kernel,
+        ph,
+        rows,
+        multi,
+    } = *ctx;
+    list.clear();
+    let mut count = 0u64;
+    let mut b = AirBatch::default();
+    for (k, out) in out.iter_mut().enumerate() {
+        let i = c * LIST_CHUNK + k;
+        let ki = pt.kind[i];
+        if rows.skips(ki) {
+            if !ki.is_fluid() {
+                *out = [0.0; 3];
+            }
+            list.end_particle();
+            continue;
+        }
+        search(list, grid, pt, i, kernel, pairs, multi);
+        let (rho_i, p_i) = (pt.rho[i], pt.p[i]);
+        let (mut ay, mut az) = (0.0, 0.0);
+        let entries = list.last_entries();
+        count += entries.len() as u64;
+        for tags in entries.chunks_mut(AIR_BATCH) {
+            b.gather(tags, pt, i);
+            // The lists flag water and air alike as fluid (for the body force and the sensors).
+            for (t, kind) in tags.iter_mut().zip(b.kind) {
+                mark_fluid(t, kind.is_fluid());
+            }
+            b.geometry(pair_kernel, pt.level.get(i).copied().unwrap_or(0));
+            for l in 0..tags.len() {
+                let q = b.pair(l);
+                let pf = pressure_sum(ph, ki, p_i, rho_i, &q) * b.fw[l];
+                ay -= pf * q.dy;
+                az -= pf * q.dz;
+            }
+        }
+        list.end_particle();
+        *out = [ay / rho_i, az / rho_i - ph.g, 0.0];
+    }
+    count
 }
 
 /// The neighbour search of particle i into `list` (as the single-phase momentum pass searches).
@@ -264,51 +418,94 @@ pub fn continuity_rates(
     let pair_kernel = lists
         .kernel
         .expect("continuity pass before the momentum pass built the lists");
+    let avx2 = has_avx2();
     let mut out = std::mem::take(&mut pt.rate);
     {
         let pt: &Particles = pt;
+        let ctx = ContinuityChunk {
+            pt,
+            pair_kernel: &pair_kernel,
+            ph: &ph,
+            rows,
+        };
         out.par_chunks_mut(LIST_CHUNK)
             .zip(lists.chunks.par_iter())
             .enumerate()
             .for_each(|(c, (out, list))| {
-                for (k, out) in out.iter_mut().enumerate() {
-                    let i = c * LIST_CHUNK + k;
-                    let ki = pt.kind[i];
-                    if rows.skips(ki) {
-                        if !ki.is_fluid() {
-                            out[2] = 0.0;
-                        }
-                        continue;
-                    }
-                    let (yi, zi, vyi, vzi) = (pt.y[i], pt.z[i], pt.vy[i], pt.vz[i]);
-                    let (rho_i, p_i, li) = (pt.rho[i], pt.p[i], pt.level[i]);
-                    let (ci, rho0_i) = ph.of(ki);
-                    let mut sum = 0.0;
-                    for &t in list.tags(k) {
-                        let (j, q) = pair_of(t, pt, yi, zi, vyi, vzi);
-                        let fw = pair_kernel.grad_factor(li, pt.level[j], q.r) * q.vol;
-                        let dp_hydro = -rho0_i * ph.g * q.dz;
-                        sum += match q.kind {
-                            // A flux to a dummy would carry mass through the wall.
-                            Kind::Wall | Kind::Body => fw * q.vdotr,
-                            kj if kj == ki => {
-                                fw * q.vdotr
-                                    + riemann::continuity_term(
-                                        p_i, q.p, rho_i, q.rho, fw, q.r, ci, dp_hydro,
-                                    )
-                            }
-                            // The water's density does not take the air's flux: for it the air is a
-                            // free surface (see `crate::sph::air`, measured on a 30 deg wedge).
-                            _ if ki == Kind::Fluid => 0.0,
-                            _ => {
-                                let (i, j) = ph.sides(p_i, rho_i, ci, &q);
-                                air::interface_continuity_term(i, j, q.vdotr, q.r, fw, dp_hydro)
-                            }
-                        };
-                    }
-                    out[2] = rho_i * sum;
+                #[cfg(target_arch = "x86_64")]
+                if avx2 {
+                    // SAFETY: the CPU has AVX2 (checked at run time above).
+                    return unsafe { continuity_chunk_avx2(&ctx, c, out, list) };
                 }
+                continuity_chunk(&ctx, c, out, list)
             });
     }
     pt.rate = out;
+}
+
+/// What a chunk of the two-phase continuity pass reads.
+struct ContinuityChunk<'a> {
+    pt: &'a Particles,
+    pair_kernel: &'a PairKernel,
+    ph: &'a Phases,
+    rows: Rows,
+}
+
+/// [`continuity_chunk`] compiled with AVX2.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn continuity_chunk_avx2(ctx: &ContinuityChunk, c: usize, out: &mut [[f64; 3]], list: &ChunkLists) {
+    continuity_chunk(ctx, c, out, list)
+}
+
+/// The two-phase continuity pass over chunk `c` of the particles.
+#[inline(always)]
+fn continuity_chunk(ctx: &ContinuityChunk, c: usize, out: &mut [[f64; 3]], list: &ChunkLists) {
+    let ContinuityChunk {
+        pt,
+        pair_kernel,
+        ph,
+        rows,
+    } = *ctx;
+    let mut b = AirBatch::default();
+    for (k, out) in out.iter_mut().enumerate() {
+        let i = c * LIST_CHUNK + k;
+        let ki = pt.kind[i];
+        if rows.skips(ki) {
+            if !ki.is_fluid() {
+                out[2] = 0.0;
+            }
+            continue;
+        }
+        let (rho_i, p_i) = (pt.rho[i], pt.p[i]);
+        let (ci, rho0_i) = ph.of(ki);
+        let mut sum = 0.0;
+        for tags in list.tags(k).chunks(AIR_BATCH) {
+            b.gather(tags, pt, i);
+            b.geometry(pair_kernel, pt.level.get(i).copied().unwrap_or(0));
+            for l in 0..tags.len() {
+                let q = b.pair(l);
+                let fw = b.fw[l];
+                let dp_hydro = -rho0_i * ph.g * q.dz;
+                sum += match q.kind {
+                    // A flux to a dummy would carry mass through the wall.
+                    Kind::Wall | Kind::Body => fw * q.vdotr,
+                    kj if kj == ki => {
+                        fw * q.vdotr
+                            + riemann::continuity_term(
+                                p_i, q.p, rho_i, q.rho, fw, q.r, ci, dp_hydro,
+                            )
+                    }
+                    // The water's density does not take the air's flux: for it the air is a free
+                    // surface (see `crate::sph::air`, measured on a 30 deg wedge).
+                    _ if ki == Kind::Fluid => 0.0,
+                    _ => {
+                        let (i, j) = ph.sides(p_i, rho_i, ci, &q);
+                        air::interface_continuity_term(i, j, q.vdotr, q.r, fw, dp_hydro)
+                    }
+                };
+            }
+        }
+        out[2] = rho_i * sum;
+    }
 }
