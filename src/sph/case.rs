@@ -474,9 +474,14 @@ pub fn resolve(
 /// low, [`air::auto_needs_air`], within the expected wetted half-width: the half-breadth at the keel's
 /// deepest immersion, times pi/2 for the water's rise, Wagner 1932), a layer of standard air over the
 /// calm surface as wide as the band of base resolution (the refined tank's, or 1.5 half-breadths without
-/// one) and as high as the section above the water at the start plus the air gap under the keel (given,
-/// or the larger of [`air::CLEARANCE_DP`] spacings and [`air::FLAT_GAP_FRACTION`] of the flat keel's
-/// half-width) plus 3 spacings.
+/// one) and as high as the air gap under the keel (given, or the larger of [`air::CLEARANCE_DP`] spacings
+/// and [`air::FLAT_GAP_FRACTION`] of the flat keel's half-width) plus the keel's deepest immersion of the
+/// run (the water beside a section rises by less: (pi/2 - 1) of the immersion at the spray root of a
+/// wedge, Wagner 1932), capped at the section's height above the water at the start, plus 3 spacings.
+/// The air above that height is pushed aside by the hull's descent at pressures of order rho_a V^2, a
+/// few pascals: on Ochi's flat 0.174 Lpp section at 1 m/s a layer as high as the section (0.57 m) and
+/// one 0.81 m high gave the keel sensors' cushion peaks and the section force's peak of this layer
+/// (0.27 m) within 0.3 %, at half its air particles (docs/guide/air.md).
 fn resolve_air(
     section: &Section,
     o: &Overrides,
@@ -521,12 +526,13 @@ fn resolve_air(
         }
         None => (air::CLEARANCE_DP * dp).max(air::FLAT_GAP_FRACTION * section.half_breadth_at(0.0)),
     };
-    let height = (section.height() - d0).max(0.0) + clearance + 3.0 * dp;
+    let above = (section.height() - d0).max(0.0);
+    let height = above.min(keel_depth_end) + clearance + 3.0 * dp;
     let layer = AirLayer::standard(half_width, height, clearance);
     let phase = layer.phase();
     notes.push(format!(
-        "air layer: {half_width:.3} m half-width, {height:.3} m over the calm surface (the section's height above \
-         the water at the start, its clearance and 3 dp); standard air, {:.3} kg/m3, {:.0} Pa, gamma {}, sound \
+        "air layer: {half_width:.3} m half-width, {height:.3} m over the calm surface (the keel's deepest immersion \
+         of the run, at most the section's height above the water at the start, its clearance and 3 dp); standard air, {:.3} kg/m3, {:.0} Pa, gamma {}, sound \
          speed {:.0} m/s (the air takes its own substeps, limited by it, within the water's time step)",
         phase.rho0, phase.p_atm, phase.gamma, phase.c
     ));

@@ -28,8 +28,10 @@ pub struct Grid {
     /// Per cell, whether a coarse (level > 0) particle lies within [`COARSE_REACH`] - 1 cells of it;
     /// empty for a single-resolution run ([`Grid::mark_coarse`]).
     near_coarse: Vec<bool>,
-    /// Scratch of [`Grid::mark_coarse`] (cells holding a coarse particle; their row-wise dilation).
+    /// The cells that held a coarse particle at the last [`Grid::mark_coarse`], whose dilation
+    /// `near_coarse` is.
     has_coarse: Vec<bool>,
+    /// Scratch of [`Grid::mark_coarse`] (the cells holding a coarse particle now; the row-wise dilation).
     rows_coarse: Vec<bool>,
 }
 
@@ -66,16 +68,23 @@ impl Grid {
     /// After [`Grid::sort`] and the permutation: mark every cell within [`MIXED_REACH`] cells of a cell
     /// that holds a coarse particle (`level` in storage order), so that a base-resolution particle there
     /// searches far enough for its mixed pairs (and one elsewhere only as far as its own support).
+    ///
+    /// The marks depend only on which cells hold a coarse particle: when those are the cells of the last
+    /// call (the coarse far field moves little between two sorts), the marks are kept as they are.
     pub fn mark_coarse(&mut self, level: &[u8]) {
         let (ny, nz) = (self.ny, self.nz);
-        let mut has = std::mem::take(&mut self.has_coarse);
-        let mut rows = std::mem::take(&mut self.rows_coarse);
+        let mut has = std::mem::take(&mut self.rows_coarse);
         has.resize(ny * nz, false);
-        rows.resize(ny * nz, false);
         for (c, h) in has.iter_mut().enumerate() {
             let r = self.cell_start[c] as usize..self.cell_start[c + 1] as usize;
             *h = level[r].iter().any(|&l| l > 0);
         }
+        if has == self.has_coarse && self.near_coarse.len() == ny * nz {
+            self.rows_coarse = has;
+            return;
+        }
+        let mut rows = std::mem::take(&mut self.has_coarse);
+        rows.resize(ny * nz, false);
         let k = MIXED_REACH;
         // Separable dilation: along the rows, then along the columns, each with a running count of the
         // marked cells in the window of 2k + 1 (one pass over the cells instead of 2k + 1).
@@ -415,6 +424,27 @@ mod tests {
         let ys = order.iter().map(|&k| y[k as usize]).collect();
         let zs = order.iter().map(|&k| z[k as usize]).collect();
         (g, ys, zs)
+    }
+
+    #[test]
+    fn the_coarse_marks_follow_a_coarse_particle_to_its_new_cell() {
+        // Cells of 0.1 on [0, 1] x [0, 1]: one coarse particle and one at the base resolution.
+        let mut g = Grid::new(0.0, 1.0, 0.0, 1.0, 0.1, false);
+        let marks = |g: &mut Grid, y: [f64; 2], z: [f64; 2]| {
+            let order = g.sort(&y, &z).to_vec();
+            let level: Vec<u8> = order.iter().map(|&k| [1u8, 0][k as usize]).collect();
+            g.mark_coarse(&level);
+            (0..10)
+                .map(|c| g.reach(0, 0.05 + 0.1 * c as f64, 0.05))
+                .collect::<Vec<_>>()
+        };
+        let first = marks(&mut g, [0.05, 0.95], [0.05, 0.95]);
+        assert_eq!(first, [3, 3, 3, 3, 2, 2, 2, 2, 2, 2]);
+        // the coarse particle moves within its cell: the marks stay
+        assert_eq!(marks(&mut g, [0.06, 0.5], [0.04, 0.5]), first);
+        // it moves five cells along the row: the marks move with it
+        let moved = marks(&mut g, [0.55, 0.5], [0.05, 0.5]);
+        assert_eq!(moved, [2, 2, 3, 3, 3, 3, 3, 3, 3, 2]);
     }
 
     #[test]

@@ -96,7 +96,7 @@ const AIR_BATCH: usize = 8;
 /// loop without gathers or branches that the compiler vectorises; the pair terms that depend on the
 /// phases follow one by one. Every quantity takes the operations of a pair at a time, so the sums are
 /// bit-identical to a plain loop (as in [`crate::sph::pair_batch`]).
-#[derive(Clone, Copy)]
+#[derive(Clone, Copy, Default)]
 struct AirBatch {
     dy: [f64; AIR_BATCH],
     dz: [f64; AIR_BATCH],
@@ -112,26 +112,6 @@ struct AirBatch {
     kind: [Kind; AIR_BATCH],
 }
 
-impl Default for AirBatch {
-    fn default() -> Self {
-        let z = [0.0; AIR_BATCH];
-        Self {
-            dy: z,
-            dz: z,
-            dvy: z,
-            dvz: z,
-            r: z,
-            vdotr: z,
-            fw: z,
-            p: z,
-            rho: z,
-            vol: z,
-            coarse: [false; AIR_BATCH],
-            kind: [Kind::Fluid; AIR_BATCH],
-        }
-    }
-}
-
 impl AirBatch {
     /// Gather the neighbours of list entries `tags` (at most [`AIR_BATCH`]) of particle `i`.
     #[inline(always)]
@@ -143,7 +123,7 @@ impl AirBatch {
             &pt.p[..n],
             &pt.vol[..n],
             &pt.kind[..n],
-            &pt.level[..],
+            &pt.level[..n],
         );
         let (yi, zi, vyi, vzi) = (y[i], z[i], vy[i], vz[i]);
         for (l, &t) in tags.iter().enumerate().take(AIR_BATCH) {
@@ -162,14 +142,14 @@ impl AirBatch {
             self.rho[l] = rho[j];
             self.vol[l] = vol[j];
             self.kind[l] = kind[j];
-            self.coarse[l] = level.get(j).is_some_and(|&v| v != 0);
+            self.coarse[l] = level[j] != 0;
         }
     }
 
-    /// |r_ij|, (v_i - v_j) . r_ij and F_ij V_j of every lane, for a particle of level `li`.
+    /// |r_ij|, (v_i - v_j) . r_ij and F_ij V_j of every lane, with the kernels `k0` of the pairs with a
+    /// neighbour at the base resolution and `k1` with a coarse one.
     #[inline(always)]
-    fn geometry(&mut self, kernel: &PairKernel, li: u8) {
-        let (k0, k1) = (*kernel.pair(li, 0), *kernel.pair(li, 1));
+    fn geometry(&mut self, [k0, k1]: &[WendlandC2; 2]) {
         for l in 0..AIR_BATCH {
             let (dy, dz) = (self.dy[l], self.dz[l]);
             let r = (dy * dy + dz * dz).sqrt();
@@ -350,6 +330,8 @@ fn momentum_chunk(
         }
         search(list, grid, pt, i, kernel, pairs, multi);
         let (rho_i, p_i) = (pt.rho[i], pt.p[i]);
+        let li = pt.level[i];
+        let kernels = [*pair_kernel.pair(li, 0), *pair_kernel.pair(li, 1)];
         let (mut ay, mut az) = (0.0, 0.0);
         let entries = list.last_entries();
         count += entries.len() as u64;
@@ -359,7 +341,7 @@ fn momentum_chunk(
             for (t, kind) in tags.iter_mut().zip(b.kind) {
                 mark_fluid(t, kind.is_fluid());
             }
-            b.geometry(pair_kernel, pt.level.get(i).copied().unwrap_or(0));
+            b.geometry(&kernels);
             for l in 0..tags.len() {
                 let q = b.pair(l);
                 let pf = pressure_sum(ph, ki, p_i, rho_i, &q) * b.fw[l];
@@ -479,10 +461,12 @@ fn continuity_chunk(ctx: &ContinuityChunk, c: usize, out: &mut [[f64; 3]], list:
         }
         let (rho_i, p_i) = (pt.rho[i], pt.p[i]);
         let (ci, rho0_i) = ph.of(ki);
+        let li = pt.level[i];
+        let kernels = [*pair_kernel.pair(li, 0), *pair_kernel.pair(li, 1)];
         let mut sum = 0.0;
         for tags in list.tags(k).chunks(AIR_BATCH) {
             b.gather(tags, pt, i);
-            b.geometry(pair_kernel, pt.level.get(i).copied().unwrap_or(0));
+            b.geometry(&kernels);
             for l in 0..tags.len() {
                 let q = b.pair(l);
                 let fw = b.fw[l];
