@@ -119,6 +119,10 @@ fn study(deg: f64, n_half: f64, method: SensorMethod, divergence_correction: boo
         setup.tank_half_width *= f;
         setup.tank_depth *= f;
     }
+    // `CONV_MIRROR=0`: both sides of the wedge in the tank instead of a symmetry plane.
+    if std::env::var("CONV_MIRROR").is_ok_and(|v| v == "0") {
+        setup.mirror = false;
+    }
     if let Ok(w) = std::env::var("CONV_WIDTH_DP") {
         let w: f64 = w.parse().unwrap();
         for s in &mut setup.sensors {
