@@ -98,6 +98,8 @@ fn study(deg: f64, n_half: f64, method: SensorMethod, divergence_correction: boo
             h_over_dp: std::env::var("CONV_H").ok().map(|v| v.parse().unwrap()),
             // `CONV_SHIFTING=1`: particle shifting with free-surface treatment (uniform tank).
             shifting: std::env::var("CONV_SHIFTING").ok().map(|v| v == "1"),
+            // `CONV_MIRROR=0`: both sides of the wedge in the tank instead of a symmetry plane.
+            mirror: std::env::var("CONV_MIRROR").ok().map(|v| v != "0"),
             // `CONV_UNIFORM=1`: one spacing throughout the tank instead of the refined band.
             refinement: std::env::var("CONV_UNIFORM")
                 .ok()
@@ -118,10 +120,6 @@ fn study(deg: f64, n_half: f64, method: SensorMethod, divergence_correction: boo
         let f: f64 = f.parse().unwrap();
         setup.tank_half_width *= f;
         setup.tank_depth *= f;
-    }
-    // `CONV_MIRROR=0`: both sides of the wedge in the tank instead of a symmetry plane.
-    if std::env::var("CONV_MIRROR").is_ok_and(|v| v == "0") {
-        setup.mirror = false;
     }
     if let Ok(w) = std::env::var("CONV_WIDTH_DP") {
         let w: f64 = w.parse().unwrap();
