@@ -340,8 +340,8 @@ pub fn summary(r: &mut Report, saved: &Saved) {
         .collect();
     r.push(Block::Table {
         caption:
-            "Governing event per station: section force peak (N/m), events that slam by Ochi's \
-                  criterion / events whose keel emerges"
+            "Governing event per station: design section force (N/m, the design rule applied to the \
+                  section force peak), events that slam by Ochi's criterion / events whose keel emerges"
                 .into(),
         header: [
             "station",

@@ -73,6 +73,41 @@ fn flags_of_source(d: &Value) -> Vec<String> {
     f
 }
 
+/// The impact window of the SPH run and the analytic peak time of design entry `d` of station `f`,
+/// from the governing event (the one whose speed and wave the entry names).
+fn governing_timing(saved: &Saved, f: f64, d: &Value) -> (String, Option<f64>) {
+    let name = text(d, "name");
+    let event = saved.events().iter().find(|e| {
+        num(e, "station") == Some(f)
+            && num(e, "speed_m_per_s") == num(d, "speed_m_per_s")
+            && text(e, "wave") == text(d, "wave")
+    });
+    let Some(e) = event else {
+        return ("-".into(), None);
+    };
+    let named = |v: &Value| -> Option<Value> {
+        list(v, "sensors")
+            .iter()
+            .find(|x| text(x, "name") == name)
+            .cloned()
+    };
+    let window = named(&e["sph"])
+        .and_then(|x| {
+            let w = x["impact_window_s"].as_array()?;
+            Some(format!(
+                "{:.1}-{:.1}",
+                w.first()?.as_f64()? * 1e3,
+                w.get(1)?.as_f64()? * 1e3
+            ))
+        })
+        .unwrap_or_else(|| "-".into());
+    // No analytic peak (a flat keel's panels): no time either.
+    let analytic = named(&e["analytic"])
+        .filter(|x| num(x, "peak_pa").is_some_and(|p| p > 0.0))
+        .and_then(|x| num(&x, "peak_time_s"));
+    (window, analytic)
+}
+
 pub fn page(r: &mut Report, saved: &Saved) {
     r.heading(1, "Sign-off: design slamming loads");
     let s = &saved.summary;
@@ -114,10 +149,13 @@ pub fn page(r: &mut Report, saved: &Saved) {
                 verdict_words(d),
                 speed_text(num(d, "speed_m_per_s")),
             ]);
+            let (window, analytic_time) = governing_timing(saved, f, d);
             detail.push(vec![
                 text(d, "name").to_string(),
                 text(d, "impact").replace('_', " "),
                 fmt(num(d, "peak_time_s"), 1e3, 1),
+                window,
+                fmt(analytic_time, 1e3, 1),
                 fmt(num(d, "rise_time_s"), 1e3, 2),
                 fmt(num(d, "impulse"), 1.0, 2),
                 fmt(num(d, "particles_across_wetted"), 1.0, 1),
@@ -148,8 +186,10 @@ pub fn page(r: &mut Report, saved: &Saved) {
         rows,
     });
     r.push(Block::Table {
-        caption: "The governing impact of each panel: SPH impact status, slamming peak time, rise time, \
-                  impulse over the impact window (the sph_impulse_pa_s column of pressures.csv is over the \
+        caption: "The governing impact of each panel: SPH impact status, slamming peak time, the impact \
+                  window it was taken from (Wagner's contact crossing the panel, widened by half its time \
+                  and by 6 particle spacings of penetration for the SPH jet root's lag), the analytic \
+                  (MLM) peak time, rise time, impulse over the impact window (the sph_impulse_pa_s column of pressures.csv is over the \
                   whole record), particles across the analytic wetted half-width when \
                   the contact crosses the panel (at the spacing of the keel stage that resolved it, where one did: \
                   a fine run of the section's lower part, see the SPH notes), and the water-hammer bound rho c_w V of a flat keel \
@@ -160,6 +200,8 @@ pub fn page(r: &mut Report, saved: &Saved) {
             "panel",
             "SPH impact",
             "peak ms",
+            "window ms",
+            "MLM peak ms",
             "rise ms",
             "impulse Pa s",
             "particles across",
@@ -222,10 +264,12 @@ pub fn page(r: &mut Report, saved: &Saved) {
         });
     match top {
         Some(b) => r.para(&format!(
-            "Total bow slamming force, largest over the events: {:.1} N (upper bound: the sum over the \
-             stations of each one's section force peak in that event, SPH where it ran in that event and \
-             generalised Wagner elsewhere, so not the sum of the table above) at {} m/s in {}, point of \
-             action {:.3} m from midship; at one instant {} N. Verdict: {}.",
+            "Total bow slamming force, largest over the events: {:.1} N at {} m/s in {}, point of action \
+             {:.3} m from midship: the integral along the hull (trapezoid rule) of each station's section \
+             force peak in that event, SPH where it ran in that event and generalised Wagner elsewhere \
+             (so not built from the table above), over the span from the aftmost to the foremost assessed \
+             station only, with nothing extrapolated forward or aft of them; an upper bound for that span, \
+             since the stations' peaks do not occur together. At one instant: {} N. Verdict: {}.",
             num(b, "peak_sum_total_n").unwrap_or(f64::NAN),
             speed_text(num(b, "speed_m_per_s")),
             text(b, "wave"),
@@ -243,11 +287,20 @@ pub fn page(r: &mut Report, saved: &Saved) {
          where the flow along the hull matters most."
             .into(),
     );
-    items.push(
+    let air = text(&saved.summary["settings"], "air");
+    items.push(if air == "off" || air.is_empty() {
         "Single-phase SPH: no air. At flat and low-deadrise panels the impact is cushioned by air in \
          reality. Panels on a flat keel have no design value here (neither SPH nor the analytic models \
          compute that impact); the water-hammer pressure is stated as the bound without air."
-            .into(),
-    );
+            .into()
+    } else {
+        format!(
+            "Air (--air {air}): the runs listed under \"Air cushion / low deadrise\" below have air as a \
+             second phase, the others are single-phase. The cushion peaks of the panels on a flat keel are \
+             shown but have no design value: they grow with the water's artificial sound speed \
+             (docs/guide/air.md). The peak times of those panels count from keel entry and are negative \
+             where the cushion peaks before it, during the keel's approach through the air gap."
+        )
+    });
     r.push(Block::List(items));
 }
