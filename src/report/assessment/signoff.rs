@@ -113,8 +113,10 @@ pub fn page(r: &mut Report, saved: &Saved) {
     let s = &saved.summary;
     r.para(&format!(
         "Design rule: {}. The SPH value is the slamming peak of the sensor's impact window (the analytic \
-         wetted contact crossing the sensor), never a value of the contact transient, of the immersion \
-         that follows or of the end of a run; U is its discretisation uncertainty: the GCI of the matched \
+         wetted contact crossing the sensor, widened for the SPH jet root's lag), never a value of the \
+         contact transient or of the end of a run. At a slow entry the widened window reaches into the \
+         immersion: a peak long after the analytic (MLM) peak time of the next table may be a later swing \
+         of the record, not the impact; read it with its history. U is its discretisation uncertainty: the GCI of the matched \
          peaks at the convergence levels (SPH = smoothed-particle hydrodynamics; GCI = Roache's grid \
          convergence index, from two levels with the order 1 assumed unless three give it), or, where the \
          levels' peaks are different events, the difference between them. Verdicts: converged (GCI at \
