@@ -8,8 +8,10 @@
 //! station (entry-velocity profile, pressure and force histories, particle snapshot at peak pressure);
 //! results across the design space (peak pressure against speed and along the girth, analytic beside
 //! SPH, convergence verdicts); comparison with published data (`comparisons` in summary.json, when
-//! present); appendix (plotted numbers, run settings).
+//! present); appendix (plotted numbers, run settings, the largest contour pressure of every run:
+//! [`contour`]).
 
+mod contour;
 pub mod data;
 mod forcing;
 mod front;

@@ -442,6 +442,7 @@ pub fn appendix(r: &mut Report, saved: &Saved) {
             rows,
         });
     }
+    super::contour::table(r, saved);
     r.para(
         "Histories (pressure, force, velocity) are plotted from the run folders named in summary.json \
          (cache/<key>/history.csv); every plotted number of every figure is in its CSV twin in figures/.",
