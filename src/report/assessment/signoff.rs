@@ -124,8 +124,9 @@ pub fn page(r: &mut Report, saved: &Saved) {
          SPH value), mismatched (the coarser level's peak is another event), not assessed (one level, \
          or no SPH impact). A panel with no design value (\"-\") is one no model here computes. \
          Analytic: the modified Logvinovich model (MLM) for pressures, generalised Wagner for forces. \
-         Pressures are totals; the hydrostatic part at the time of the SPH peak is given apart, as class \
-         rules treat them apart. Density {} kg/m3.",
+         SPH pressures are totals, hydrostatic part included; the analytic (MLM) pressures are \
+         hydrodynamic only. The hydrostatic column is the part at the time of the SPH peak, given apart as \
+         class rules treat them apart (it is not in an analytic design value). Density {} kg/m3.",
         text(&s["settings"], "design_value"),
         fmt(num(&s["settings"], "water_density_kg_m3"), 1.0, 1)
     ));
@@ -196,7 +197,7 @@ pub fn page(r: &mut Report, saved: &Saved) {
                   the contact crosses the panel (at the spacing of the keel stage that resolved it, where one did: \
                   a fine run of the section's lower part, see the SPH notes), and the water-hammer bound rho c_w V of a flat keel \
                   (an upper bound without air; averaged over the panel, so a panel reaching beyond the flat \
-                  reads less than rho c_w V)"
+                  reads less than rho c_w V); \"-\": not applicable to the panel's impact"
             .into(),
         header: [
             "panel",
