@@ -116,8 +116,8 @@ pub fn page(r: &mut Report, saved: &Saved) {
          wetted contact crossing the sensor, widened for the SPH jet root's lag), never a value of the \
          contact transient or of the end of a run. At a slow entry the widened window reaches into the \
          immersion: a peak long after the analytic (MLM) peak time of the next table may be a later swing \
-         of the record, not the impact; read it with its history. U is its discretisation uncertainty: the GCI of the matched \
-         peaks at the convergence levels (SPH = smoothed-particle hydrodynamics; GCI = Roache's grid \
+         of the record, not the impact; read it with its history. U is its discretisation uncertainty: \
+         the GCI of the matched peaks at the convergence levels (SPH = smoothed-particle hydrodynamics; GCI = Roache's grid \
          convergence index, from two levels with the order 1 assumed unless three give it), or, where the \
          levels' peaks are different events, the difference between them. Verdicts: converged (GCI at \
          most 5 %), acceptable (at most 20 %), not converged (above 20 %: refine before relying on the \
@@ -192,8 +192,8 @@ pub fn page(r: &mut Report, saved: &Saved) {
         caption: "The governing impact of each panel: SPH impact status, slamming peak time, the impact \
                   window it was taken from (Wagner's contact crossing the panel, widened by half its time \
                   and by 6 particle spacings of penetration for the SPH jet root's lag), the analytic \
-                  (MLM) peak time, rise time, impulse over the impact window (the sph_impulse_pa_s column of pressures.csv is over the \
-                  whole record), particles across the analytic wetted half-width when \
+                  (MLM) peak time, rise time, impulse over the impact window (the sph_impulse_pa_s column \
+                  of pressures.csv is over the whole record), particles across the analytic wetted half-width when \
                   the contact crosses the panel (at the spacing of the keel stage that resolved it, where one did: \
                   a fine run of the section's lower part, see the SPH notes), and the water-hammer bound rho c_w V of a flat keel \
                   (an upper bound without air; averaged over the panel, so a panel reaching beyond the flat \
