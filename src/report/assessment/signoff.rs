@@ -130,6 +130,14 @@ pub fn page(r: &mut Report, saved: &Saved) {
         text(&s["settings"], "design_value"),
         fmt(num(&s["settings"], "water_density_kg_m3"), 1.0, 1)
     ));
+    if list(s, "irregular").is_empty() {
+        r.para(
+            "No irregular sea in this assessment: the design values below are those of the regular waves \
+             and speeds assessed, not of the design events of an irregular sea (the most probable largest \
+             entry velocity over an exposure time: [[irregular]] in the sea-state file, \
+             docs/guide/assess.md). Check that these waves are the design basis you intend to sign.",
+        );
+    }
     let mut rows = Vec::new();
     let mut detail = Vec::new();
     let mut flagged: Vec<String> = Vec::new();
