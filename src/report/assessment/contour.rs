@@ -1,20 +1,18 @@
 //! The largest wall pressure anywhere on the wetted contour of each SPH run and keel stage, beside the
 //! panels' design values: a panel is a chosen girth, and the largest pressure of the section may lie
-//! between panels. Read from each run's own `summary.json` (`peak_contour_pressure_*`, and the
-//! convergence statement of `contour peak pressure` where the run had a companion at twice the spacing).
+//! between panels. From each run's and keel stage's own `summary.json` ([`super::data::Run`]:
+//! `peak_contour_pressure_*`, and the convergence statement of `contour peak pressure` where the run had a
+//! companion at twice the spacing).
 
 use serde_json::Value;
 
 use super::Report;
-use super::data::{Saved, list, num, speed_text, text};
+use super::data::{Saved, fmt, list, num, speed_text, text};
 use crate::report::document::Block;
 
 /// One row: where the value came from, then the pressure (kPa), girth (m), time (ms) and the
 /// convergence statement, each "-" where the summary does not give it.
 fn row(station: String, speed: String, record: &str, s: &Value) -> Vec<String> {
-    let g = |v: Option<f64>, scale: f64, d: usize| {
-        v.map_or("-".into(), |x| format!("{:.d$}", x * scale))
-    };
     let statement = list(&s["convergence"], "peaks")
         .iter()
         .find(|p| text(p, "name") == "contour peak pressure")
@@ -26,9 +24,9 @@ fn row(station: String, speed: String, record: &str, s: &Value) -> Vec<String> {
         station,
         speed,
         record.to_string(),
-        g(num(s, "peak_contour_pressure_pa"), 1e-3, 2),
-        g(num(s, "peak_contour_pressure_girth_m"), 1.0, 3),
-        g(num(s, "peak_contour_pressure_time_s"), 1e3, 1),
+        fmt(num(s, "peak_contour_pressure_pa"), 1e-3, 2),
+        fmt(num(s, "peak_contour_pressure_girth_m"), 1.0, 3),
+        fmt(num(s, "peak_contour_pressure_time_s"), 1e3, 1),
         statement,
     ]
 }
@@ -41,18 +39,14 @@ pub fn table(r: &mut Report, saved: &Saved) {
         let station = format!("{}", num(e, "station").unwrap_or(f64::NAN));
         let speed = speed_text(num(e, "speed_m_per_s"));
         rows.push(row(station.clone(), speed.clone(), "run", &run.summary));
-        for k in 0..list(&run.summary, "stages").len() {
-            let path = run.folder.join(format!("stage_{k}")).join("summary.json");
-            let stage: Option<Value> = std::fs::read_to_string(&path)
-                .ok()
-                .and_then(|t| serde_json::from_str(&t).ok());
+        for (k, stage) in run.stage_summaries.iter().enumerate() {
             let sensors: Vec<&str> = list(&run.summary["stages"][k], "sensors")
                 .iter()
                 .filter_map(Value::as_str)
                 .collect();
             let what = format!("keel stage {} ({})", k + 1, sensors.join(", "));
             match stage {
-                Some(s) => rows.push(row(station.clone(), speed.clone(), &what, &s)),
+                Some(s) => rows.push(row(station.clone(), speed.clone(), &what, s)),
                 None => rows.push(vec![
                     station.clone(),
                     speed.clone(),
@@ -60,7 +54,10 @@ pub fn table(r: &mut Report, saved: &Saved) {
                     "-".into(),
                     "-".into(),
                     "-".into(),
-                    format!("{} not readable", path.display()),
+                    format!(
+                        "stage_{k}/summary.json of {} not readable",
+                        run.folder.display()
+                    ),
                 ]),
             }
         }

@@ -39,6 +39,8 @@ pub struct Run {
     /// Columns of each keel stage's history.csv (`stage_<k>/`), by stage index
     /// ([`crate::sph::keel_stage`]); empty where a stage's folder is missing.
     pub stages: Vec<Vec<(String, Vec<f64>)>>,
+    /// Each keel stage's own summary.json, by stage index; `None` where it is missing or unreadable.
+    pub stage_summaries: Vec<Option<Value>>,
     pub peak_png: Option<Vec<u8>>,
 }
 
@@ -172,16 +174,19 @@ fn load_run(dir: &Path) -> Result<Run> {
     let columns = read_history(&dir.join("history.csv"))?;
     let peak_png = std::fs::read(dir.join(crate::sph::peak_snapshot::FILE)).ok();
     let n_stages = summary["stages"].as_array().map_or(0, Vec::len);
+    let stage_dir = |k: usize| dir.join(format!("stage_{k}"));
     let stages = (0..n_stages)
-        .map(|k| {
-            read_history(&dir.join(format!("stage_{k}")).join("history.csv")).unwrap_or_default()
-        })
+        .map(|k| read_history(&stage_dir(k).join("history.csv")).unwrap_or_default())
+        .collect();
+    let stage_summaries = (0..n_stages)
+        .map(|k| read_json(&stage_dir(k).join("summary.json")).ok())
         .collect();
     Ok(Run {
         folder: dir.to_path_buf(),
         summary,
         columns,
         stages,
+        stage_summaries,
         peak_png,
     })
 }
@@ -277,6 +282,11 @@ impl Saved {
 }
 
 /// Whether an event is at `station` (fraction of Lpp aft of the FP).
+/// `v` times `scale` with `digits` decimals, "-" where there is no value.
+pub fn fmt(v: Option<f64>, scale: f64, digits: usize) -> String {
+    v.map_or("-".into(), |x| format!("{:.*}", digits, x * scale))
+}
+
 pub fn at(e: &Value, station: f64) -> bool {
     num(e, "station").is_some_and(|s| (s - station).abs() < 1e-9)
 }

@@ -7,12 +7,8 @@
 use serde_json::Value;
 
 use super::Report;
-use super::data::{Saved, list, num, speed_text, text};
+use super::data::{Saved, at, fmt, list, num, speed_text, text};
 use crate::report::document::Block;
-
-fn fmt(v: Option<f64>, scale: f64, digits: usize) -> String {
-    v.map_or("-".into(), |x| format!("{:.*}", digits, x * scale))
-}
 
 /// The verdict as words ("-" where none applies).
 fn verdict_words(d: &Value) -> String {
@@ -78,7 +74,7 @@ fn flags_of_source(d: &Value) -> Vec<String> {
 fn governing_timing(saved: &Saved, f: f64, d: &Value) -> (String, Option<f64>) {
     let name = text(d, "name");
     let event = saved.events().iter().find(|e| {
-        num(e, "station") == Some(f)
+        at(e, f)
             && num(e, "speed_m_per_s") == num(d, "speed_m_per_s")
             && text(e, "wave") == text(d, "wave")
     });
