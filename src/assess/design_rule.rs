@@ -9,7 +9,10 @@
 //! or generalised Wagner force):
 //!
 //! * SPH shown converged (verdict converged or acceptable, the companion's peak the same event):
-//!   design = P + U, the upper end of the uncertainty band (source `sph (converged)`);
+//!   design = P + U, the upper end of the uncertainty band (source `sph (converged)` where
+//!   GCI <= 5 %, `sph (acceptable)` where 5 % < GCI <= 20 %, the verdicts of
+//!   [`crate::loads::convergence::Verdict`]: the label never calls a peak converged that its verdict
+//!   calls acceptable);
 //! * SPH resolved but not shown converged (not converged, companion peak another event, or one
 //!   level only): design = max(P + U, A), whichever is larger (source `sph (not converged)` or
 //!   `analytic (SPH not converged)`): an unconverged SPH peak never lowers the design below the
@@ -213,7 +216,11 @@ pub fn decide(q: Option<SphQuantity>, a: AnalyticPeak) -> Option<Decision> {
     if shown_converged(q.verdict) {
         return Some(Decision {
             value: Some(upper),
-            source: "sph (converged)",
+            source: if q.verdict == Some("converged") {
+                "sph (converged)"
+            } else {
+                "sph (acceptable)"
+            },
             uncertainty: u,
         });
     }
@@ -329,6 +336,14 @@ mod tests {
         assert!((d.value.unwrap() - 2080.0).abs() < 1e-9);
         assert_eq!(d.source, "sph (converged)");
         assert!((d.uncertainty.unwrap() - 80.0).abs() < 1e-9);
+        // a GCI between 5 and 20 % is acceptable, and the label says so rather than "converged"
+        let d = decide(
+            Some(q(2000.0, Some(0.15), "acceptable")),
+            AnalyticPeak::Peak(3000.0),
+        )
+        .unwrap();
+        assert!((d.value.unwrap() - 2300.0).abs() < 1e-9);
+        assert_eq!(d.source, "sph (acceptable)");
     }
 
     #[test]

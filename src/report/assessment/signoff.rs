@@ -69,6 +69,44 @@ fn flags_of_source(d: &Value) -> Vec<String> {
     f
 }
 
+/// The forcing behind the design values against a published one: where the assessment compares its
+/// keel-entry velocities with a published computation of the same hull (the `comparisons` of
+/// `summary.json`, unit m/s), the flag gives each ratio and what it means for a pressure, which grows
+/// about with the square of the entry velocity (Wagner 1932; the analytic models here and the SPH
+/// runs are driven by that velocity). `None` where there is no such comparison.
+fn forcing_flag(s: &Value) -> Option<String> {
+    let rows: Vec<String> = list(s, "comparisons")
+        .iter()
+        .filter(|c| text(c, "unit") == "m/s")
+        .filter_map(|c| {
+            let (v, r) = (num(c, "computed")?, num(c, "reference")?);
+            (r > 0.0).then(|| {
+                format!(
+                    "{}: {v:.2} against {r:.2} m/s ({:+.0} %; a pressure about {:+.0} %)",
+                    text(c, "quantity"),
+                    100.0 * (v / r - 1.0),
+                    100.0 * ((v / r).powi(2) - 1.0)
+                )
+            })
+        })
+        .collect();
+    if rows.is_empty() {
+        return None;
+    }
+    let first = list(s, "comparisons")
+        .iter()
+        .find(|c| text(c, "unit") == "m/s");
+    let (note, source) = first.map_or(("", ""), |c| (text(c, "note"), text(c, "source")));
+    Some(format!(
+        "Forcing: the keel-entry velocities behind these design values against a published computation \
+         of the same hull: {} ({note}; {source}). A slamming pressure grows about with the square of the \
+         entry velocity, so a difference of the forcing of this size carries into every design value \
+         above, SPH and analytic alike: the relative motion (hull reconstruction and strip theory) is a \
+         source of uncertainty that U, the SPH discretisation's, does not include.",
+        rows.join("; ")
+    ))
+}
+
 /// The impact window of the SPH run and the analytic peak time of design entry `d` of station `f`,
 /// from the governing event (the one whose speed and wave the entry names).
 fn governing_timing(saved: &Saved, f: f64, d: &Value) -> (String, Option<f64>) {
@@ -288,6 +326,9 @@ pub fn page(r: &mut Report, saved: &Saved) {
     }
     r.heading(2, "Validity flags");
     let mut items = flagged;
+    if let Some(f) = forcing_flag(s) {
+        items.push(f);
+    }
     items.push(
         "2D+t: each station is a 2D water entry; the three-dimensional relief of the flow along the hull \
          is not modelled, which generally over-predicts the loads, and least accurately near the stem, \
