@@ -474,10 +474,14 @@ pub fn resolve(
 /// low, [`air::auto_needs_air`], within the expected wetted half-width: the half-breadth at the keel's
 /// deepest immersion, times pi/2 for the water's rise, Wagner 1932), a layer of standard air over the
 /// calm surface as wide as the band of base resolution (the refined tank's, or 1.5 half-breadths without
-/// one) and as high as the air gap under the keel (given, or the larger of [`air::CLEARANCE_DP`] spacings
-/// and [`air::FLAT_GAP_FRACTION`] of the flat keel's half-width) plus the keel's deepest immersion of the
-/// run (the water beside a section rises by less: (pi/2 - 1) of the immersion at the spray root of a
-/// wedge, Wagner 1932), capped at the section's height above the water at the start, plus 3 spacings.
+/// one) and of height
+///
+///   h = min(d_end, H) + g + 3 dp,
+///
+/// d_end the keel's deepest immersion of the run (the water beside a section rises by less: (pi/2 - 1)
+/// of the immersion at the spray root of a wedge, Wagner 1932), H the section's height above the water
+/// at the start, and g the air gap under the keel (given, or the larger of [`air::CLEARANCE_DP`] spacings
+/// and [`air::FLAT_GAP_FRACTION`] of the flat keel's half-width; none for an immersed start).
 /// The air above that height is pushed aside by the hull's descent at pressures of order rho_a V^2, a
 /// few pascals: on Ochi's flat 0.174 Lpp section at 1 m/s a layer as high as the section (0.57 m) and
 /// one 0.81 m high gave the keel sensors' cushion peaks and the section force's peak of this layer

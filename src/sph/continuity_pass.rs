@@ -18,7 +18,7 @@ use crate::sph::diffusion::antuono2010;
 use crate::sph::kernel::WendlandC2;
 use crate::sph::kernel_correction;
 use crate::sph::neighbour_lists::{ChunkLists, LIST_CHUNK, NeighbourLists, is_fluid, neighbour};
-use crate::sph::pair_batch::{KINEMATIC_BATCH, KinematicTerms, Kinematics, has_avx2};
+use crate::sph::pair_batch::{KINEMATIC_BATCH, KinematicTerms, Kinematics, avx2_twin, has_avx2};
 use crate::sph::particles::{Kind, Particles, View};
 use crate::sph::refinement::PairKernels;
 
@@ -103,16 +103,11 @@ struct ContinuityChunk<'a> {
     delta_term: f64,
 }
 
-/// [`continuity_chunk`] compiled with AVX2.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-fn continuity_chunk_avx2<const RIEMANN: bool, const CORRECTED: bool, const MULTI: bool>(
+avx2_twin!(continuity_chunk_avx2 = continuity_chunk<const RIEMANN: bool, const CORRECTED: bool, const MULTI: bool>(
     ctx: &ContinuityChunk,
     out: &mut [[f64; 3]],
     list: &ChunkLists,
-) {
-    continuity_chunk::<RIEMANN, CORRECTED, MULTI>(ctx, out, list)
-}
+));
 
 /// The continuity pass over chunk `ctx.c` of the particles, for the scheme.
 #[inline(always)]

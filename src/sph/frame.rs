@@ -159,12 +159,8 @@ pub fn render_png(pt: &Particles, f: &Frame) -> Result<Vec<u8>> {
             text(18, HPos::Left, VPos::Center),
         ))
         .map_err(draw_error)?;
-        // Colour bar with unit.
-        let (kilo, unit) = if f.p_scale >= 1e4 {
-            (1e3, "kPa")
-        } else {
-            (1.0, "Pa")
-        };
+        // Colour bar in kPa, the unit of the reports' tables and plots, whatever the scale.
+        let (kilo, unit) = (1e3, "kPa");
         let (bx, bw) = (w as i32 + 20, 22);
         let (btop, bbot) = (TOP as i32 + 30, ch as i32 - 30);
         let span = (bbot - btop).max(1);

@@ -242,6 +242,13 @@ impl PairKernel {
         }
     }
 
+    /// The kernels of a level-`li` particle's pairs with a base-resolution (level 0) and with a coarse
+    /// (level 1) neighbour.
+    #[inline(always)]
+    pub fn of_level(&self, li: u8) -> [WendlandC2; 2] {
+        [*self.pair(li, 0), *self.pair(li, 1)]
+    }
+
     /// F(r) of the pair of levels `li`, `lj`.
     #[inline(always)]
     pub fn grad_factor(&self, li: u8, lj: u8, r: f64) -> f64 {

@@ -402,7 +402,7 @@ mod tests {
 
     #[test]
     fn the_running_dilation_marks_what_the_window_test_marks() {
-        // Every pattern of 9 cells, windows of half-width 0 to 4 (wider than the row included).
+        // Every pattern of 9 cells, windows of half-width 0 to 10 (wider than the row included).
         for bits in 0u32..512 {
             let n = 9;
             let has = |x: usize| bits >> x & 1 == 1;

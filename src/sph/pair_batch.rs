@@ -151,6 +151,21 @@ pub struct KinematicTerms {
     pub gradient: [[f64; KINEMATIC_BATCH]; 4],
 }
 
+/// A pass's AVX2 twin: `avx2_twin!(name = inner<const A: bool, ...>(arg: Type, ...) -> Ret)` defines
+/// `name`, which calls the `#[inline(always)]` function `inner` with the same arguments, compiled with
+/// AVX2 enabled (so `inner`'s lane loops use 4-lane vectors). Call it only where [`has_avx2`] is true.
+macro_rules! avx2_twin {
+    ($name:ident = $inner:ident $(<$(const $c:ident: bool),+>)? ($($arg:ident: $ty:ty),* $(,)?) $(-> $ret:ty)?) => {
+        #[doc = concat!("[`", stringify!($inner), "`] compiled with AVX2.")]
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = "avx2")]
+        fn $name $(<$(const $c: bool),+>)? ($($arg: $ty),*) $(-> $ret)? {
+            $inner $(::<$($c),+>)? ($($arg),*)
+        }
+    };
+}
+pub(crate) use avx2_twin;
+
 /// Whether the CPU runs AVX2 (then the pair loops are compiled for it: 4 lanes a vector instead of 2).
 pub fn has_avx2() -> bool {
     #[cfg(target_arch = "x86_64")]

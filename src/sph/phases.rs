@@ -17,7 +17,14 @@
 //! * the section force's window runs from the end of the contact transient to Wagner's full wetting
 //!   (the time c reaches the chine or widest point; the end of the record when it does not stop), widened
 //!   as a sensor's; its hydrostatic part is the buoyancy rho g A(d) of the section immersed to the keel
-//!   depth d.
+//!   depth d;
+//! * in a run with air at a flat keel the section force's window still opens at the end of the contact
+//!   transient a single-phase run would have ([`RunPhases::force_start_s`]), not at the start: the flat
+//!   bottom's cushion load grows with the water's artificial sound speed as its panels' cushion peaks do
+//!   (Ochi's 0.174 Lpp section at 1 m/s with air, 10.4 mm: force peak 4.02 kN/m at c0 = 63 m/s, 5.27 kN/m
+//!   at 126 m/s; a flat bottom at 2 m/s, 6.25 mm: 33.0, 61.6 and 93.1 kN/m at c0 = 126, 252 and 504 m/s;
+//!   docs/guide/air.md), so, like those peaks and like the water hammer of a run without air, it is not
+//!   a slamming value of the section force.
 
 use crate::analytic::generalised_wagner::{self, WagnerEstimate};
 use crate::loads::anatomy::{
@@ -52,6 +59,9 @@ pub struct RunPhases<'a> {
     pub rho: f64,
     pub d0: f64,
     pub transient_end_s: f64,
+    /// Where the section force's window opens: the end of the contact transient of the water alone,
+    /// also in a run with air at a flat keel (module notes).
+    pub force_start_s: f64,
     /// The run has air ([`crate::sph::air`]): a flat keel's impact is cushioned, not acoustic.
     pub air: bool,
 }
@@ -88,6 +98,7 @@ impl<'a> RunPhases<'a> {
             rho,
             d0,
             transient_end_s,
+            force_start_s: transient_end_s,
             air: false,
         }
     }
@@ -212,7 +223,7 @@ impl<'a> RunPhases<'a> {
             window: Some(ImpactWindow {
                 crossing_start_s: h.t.first().copied().unwrap_or(0.0),
                 crossing_end_s: t_full,
-                start_s: self.transient_end_s,
+                start_s: self.force_start_s,
                 end_s: t_full * (1.0 + WINDOW_FRACTION) + lag,
             }),
             status: ImpactStatus::Resolved,
@@ -318,8 +329,22 @@ mod tests {
         let e = ph.sensor_expectation([0.15, 0.17]);
         assert_eq!(e.status, ImpactStatus::Resolved);
         assert!(e.window.unwrap().start_s > 0.0);
-        // the force's window opens at the start too
-        assert_eq!(ph.force().window.unwrap().start_s, -0.005);
+        // the force's window opens where the water alone's contact transient ends: the cushion's force,
+        // like its panel peaks, follows the artificial sound speed
+        assert_eq!(ph.force_start_s, 0.002);
+        assert_eq!(ph.force().window.unwrap().start_s, 0.002);
+        // a force peak in the cushion is not the section's slamming peak; a later one is
+        let fz: Vec<f64> =
+            h.t.iter()
+                .map(|&t| {
+                    1e4 * (-((t + 0.001) / 5e-4).powi(2)).exp()
+                        + 2e3 * (-((t - 0.004) / 1e-3).powi(2)).exp()
+                })
+                .collect();
+        let h2 = History { fz, ..h.clone() };
+        let ph2 = RunPhases::new(&flat, &h2, 0.002, 40.0, 1000.0, 0.0, 0.002).with_air(true);
+        let peak = ph2.force().slamming_peak.unwrap();
+        assert!((peak.time - 0.004).abs() < 1e-9, "{peak:?}");
         // a V keel with air keeps its contact transient
         let beta = 10f64.to_radians();
         let sec = Section::wedge(beta, 0.3, 0.3).unwrap();

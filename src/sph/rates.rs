@@ -19,7 +19,7 @@ use crate::sph::diffusion::antuono2010;
 use crate::sph::kernel::WendlandC2;
 use crate::sph::neighbour_lists::{ChunkLists, LIST_CHUNK, NeighbourLists, PairKernel};
 use crate::sph::neighbours::Grid;
-use crate::sph::pair_batch::{BATCH, Gathered, Terms, has_avx2};
+use crate::sph::pair_batch::{BATCH, Gathered, Terms, avx2_twin, has_avx2};
 use crate::sph::particles::{Kind, Particles, View};
 use crate::sph::refinement::PairKernels;
 use crate::sph::riemann;
@@ -140,22 +140,12 @@ struct MomentumChunk<'a> {
     rho0_g: f64,
 }
 
-/// [`momentum_chunk`] compiled with AVX2.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-fn momentum_chunk_avx2<
-    const RIEMANN: bool,
-    const GRAD: bool,
-    const VISCOUS: bool,
-    const MULTI: bool,
->(
+avx2_twin!(momentum_chunk_avx2 = momentum_chunk<const RIEMANN: bool, const GRAD: bool, const VISCOUS: bool, const MULTI: bool>(
     ctx: &MomentumChunk,
     out: &mut [[f64; 3]],
     grad: &mut [[f64; 2]],
     list: &mut ChunkLists,
-) -> u64 {
-    momentum_chunk::<RIEMANN, GRAD, VISCOUS, MULTI>(ctx, out, grad, list)
-}
+) -> u64);
 
 /// The momentum pass over chunk `ctx.c` of the particles: search, list, pair sums.
 #[inline(always)]

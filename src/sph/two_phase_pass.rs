@@ -23,7 +23,7 @@ use crate::sph::neighbour_lists::{
     ChunkLists, LIST_CHUNK, NeighbourLists, PairKernel, mark_fluid, neighbour,
 };
 use crate::sph::neighbours::Grid;
-use crate::sph::pair_batch::has_avx2;
+use crate::sph::pair_batch::{avx2_twin, has_avx2};
 use crate::sph::particles::{Kind, Particles};
 use crate::sph::refinement::PairKernels;
 use crate::sph::riemann;
@@ -285,17 +285,12 @@ struct MomentumChunk<'a> {
     multi: bool,
 }
 
-/// [`momentum_chunk`] compiled with AVX2.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-fn momentum_chunk_avx2(
+avx2_twin!(momentum_chunk_avx2 = momentum_chunk(
     ctx: &MomentumChunk,
     c: usize,
     out: &mut [[f64; 3]],
     list: &mut ChunkLists,
-) -> u64 {
-    momentum_chunk(ctx, c, out, list)
-}
+) -> u64);
 
 /// The two-phase momentum pass over chunk `c` of the particles: search, list, pair sums.
 #[inline(always)]
@@ -331,7 +326,7 @@ fn momentum_chunk(
         search(list, grid, pt, i, kernel, pairs, multi);
         let (rho_i, p_i) = (pt.rho[i], pt.p[i]);
         let li = pt.level[i];
-        let kernels = [*pair_kernel.pair(li, 0), *pair_kernel.pair(li, 1)];
+        let kernels = pair_kernel.of_level(li);
         let (mut ay, mut az) = (0.0, 0.0);
         let entries = list.last_entries();
         count += entries.len() as u64;
@@ -433,12 +428,12 @@ struct ContinuityChunk<'a> {
     rows: Rows,
 }
 
-/// [`continuity_chunk`] compiled with AVX2.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-fn continuity_chunk_avx2(ctx: &ContinuityChunk, c: usize, out: &mut [[f64; 3]], list: &ChunkLists) {
-    continuity_chunk(ctx, c, out, list)
-}
+avx2_twin!(continuity_chunk_avx2 = continuity_chunk(
+    ctx: &ContinuityChunk,
+    c: usize,
+    out: &mut [[f64; 3]],
+    list: &ChunkLists,
+));
 
 /// The two-phase continuity pass over chunk `c` of the particles.
 #[inline(always)]
@@ -462,7 +457,7 @@ fn continuity_chunk(ctx: &ContinuityChunk, c: usize, out: &mut [[f64; 3]], list:
         let (rho_i, p_i) = (pt.rho[i], pt.p[i]);
         let (ci, rho0_i) = ph.of(ki);
         let li = pt.level[i];
-        let kernels = [*pair_kernel.pair(li, 0), *pair_kernel.pair(li, 1)];
+        let kernels = pair_kernel.of_level(li);
         let mut sum = 0.0;
         for tags in list.tags(k).chunks(AIR_BATCH) {
             b.gather(tags, pt, i);

@@ -69,6 +69,35 @@ fn flags_of_source(d: &Value) -> Vec<String> {
     f
 }
 
+/// The section forces of the stations with a flat keel (a panel whose impact is acoustic, or
+/// cushioned in a run with air): what their design value leaves out. The force's slamming window opens
+/// after the contact transient (`src/sph/phases.rs`), so neither the water hammer of a run without air
+/// nor the cushion of a run with air, which follows the artificial sound speed, is in it. `None` where
+/// no station has a flat keel.
+fn flat_keel_force_flag(saved: &Saved) -> Option<String> {
+    let flat: Vec<String> = saved
+        .stations()
+        .iter()
+        .filter(|st| {
+            list(st, "design_pressure_pa")
+                .iter()
+                .any(|d| matches!(d["impact"].as_str(), Some("acoustic") | Some("cushioned")))
+        })
+        .map(|st| format!("{}", num(st, "station").unwrap_or(f64::NAN)))
+        .collect();
+    (!flat.is_empty()).then(|| {
+        format!(
+            "Section force at the stations with a flat keel ({}): its slamming peak is taken after the \
+             contact transient (the keel {} spacings deep), so the flat bottom's first impact is not in \
+             it: without air a water hammer that SPH with an artificial sound speed does not compute, with \
+             air a cushion load that grows with that sound speed (docs/guide/air.md). No model here gives \
+             that part of the force; the design section force is the load of the flow after it.",
+            flat.join(", "),
+            crate::sph::CONTACT_TRANSIENT_DP
+        )
+    })
+}
+
 /// The forcing behind the design values against a published one: where the assessment compares its
 /// keel-entry velocities with a published computation of the same hull (the `comparisons` of
 /// `summary.json`, unit m/s), the flag gives each ratio and what it means for a pressure, which grows
@@ -326,6 +355,9 @@ pub fn page(r: &mut Report, saved: &Saved) {
     }
     r.heading(2, "Validity flags");
     let mut items = flagged;
+    if let Some(f) = flat_keel_force_flag(saved) {
+        items.push(f);
+    }
     if let Some(f) = forcing_flag(s) {
         items.push(f);
     }
