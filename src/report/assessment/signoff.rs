@@ -50,6 +50,15 @@ fn flags_of_source(d: &Value) -> Vec<String> {
             ))
         )),
         Some("acoustic") => f.push("flat keel: acoustic impact, air cushion not modelled".into()),
+        Some("cushioned") if d["value"].is_null() => f.push(format!(
+            "flat keel with air: the two-phase cushion peak ({}) grows with the water's artificial \
+             sound speed, so it is no design value{}",
+            num(d, "sph").map_or("-".into(), |p| format!("{:.2} kPa", p / 1e3)),
+            num(d, "acoustic_bound").map_or(String::new(), |b| format!(
+                " (upper bound without air, the water hammer rho c_w V: {:.0} kPa)",
+                b / 1e3
+            ))
+        )),
         Some("in_transient") => f.push("impact not resolved by SPH at this spacing".into()),
         Some("not_crossed") | Some("after_record") => f.push("no SPH impact in the run".into()),
         _ => {}
