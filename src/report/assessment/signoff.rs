@@ -393,3 +393,34 @@ pub fn page(r: &mut Report, saved: &Saved) {
     });
     r.push(Block::List(items));
 }
+
+#[cfg(test)]
+mod tests {
+    use super::forcing_flag;
+    use serde_json::json;
+
+    #[test]
+    fn the_forcing_flag_gives_each_velocity_ratio_and_its_square() {
+        let s = json!({"comparisons": [
+            {"quantity": "P1 keel-entry velocity", "unit": "m/s", "computed": 1.289, "reference": 1.06,
+             "note": "n", "source": "src"},
+            {"quantity": "P2 pressure", "unit": "kPa", "computed": 2.7, "reference": 3.0},
+            {"quantity": "P3 keel-entry velocity", "unit": "m/s", "computed": 0.928, "reference": 0.58}
+        ]});
+        let f = forcing_flag(&s).unwrap();
+        // 1.289 / 1.06 = 1.216 and its square 1.479; 0.928 / 0.58 = 1.6 and 2.56
+        assert!(
+            f.contains("1.29 against 1.06 m/s (+22 %; a pressure about +48 %)"),
+            "{f}"
+        );
+        assert!(
+            f.contains("0.93 against 0.58 m/s (+60 %; a pressure about +156 %)"),
+            "{f}"
+        );
+        assert!(!f.contains("P2 pressure"), "only velocities: {f}");
+        // without a velocity comparison there is no flag
+        let s = json!({"comparisons": [{"quantity": "p", "unit": "kPa", "computed": 1.0, "reference": 2.0}]});
+        assert!(forcing_flag(&s).is_none());
+        assert!(forcing_flag(&json!({})).is_none());
+    }
+}
