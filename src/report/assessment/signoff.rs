@@ -34,6 +34,16 @@ fn flags(d: &Value) -> Vec<String> {
     f
 }
 
+/// The water-hammer bound of a flat-keel panel's entry `d`, as a parenthesis ("" where there is none).
+fn water_hammer_bound(d: &Value) -> String {
+    num(d, "acoustic_bound").map_or(String::new(), |b| {
+        format!(
+            " (upper bound without air, the water hammer rho c_w V: {:.0} kPa)",
+            b / 1e3
+        )
+    })
+}
+
 fn flags_of_source(d: &Value) -> Vec<String> {
     let mut f: Vec<String> = Vec::new();
     if text(d, "source") == crate::assess::results::DRY_SOURCE {
@@ -44,20 +54,14 @@ fn flags_of_source(d: &Value) -> Vec<String> {
         Some("acoustic") if d["value"].is_null() => f.push(format!(
             "flat keel: air-cushion impact, which neither single-phase SPH nor the analytic models \
              compute: no design value{}",
-            num(d, "acoustic_bound").map_or(String::new(), |b| format!(
-                " (upper bound without air, the water hammer rho c_w V: {:.0} kPa)",
-                b / 1e3
-            ))
+            water_hammer_bound(d)
         )),
         Some("acoustic") => f.push("flat keel: acoustic impact, air cushion not modelled".into()),
         Some("cushioned") if d["value"].is_null() => f.push(format!(
-            "flat keel with air: the two-phase cushion peak ({}) grows with the water's artificial \
+            "flat keel with air: the two-phase cushion peak ({} kPa) grows with the water's artificial \
              sound speed, so it is no design value{}",
-            num(d, "sph").map_or("-".into(), |p| format!("{:.2} kPa", p / 1e3)),
-            num(d, "acoustic_bound").map_or(String::new(), |b| format!(
-                " (upper bound without air, the water hammer rho c_w V: {:.0} kPa)",
-                b / 1e3
-            ))
+            fmt(num(d, "sph"), 1e-3, 2),
+            water_hammer_bound(d)
         )),
         Some("in_transient") => f.push("impact not resolved by SPH at this spacing".into()),
         Some("not_crossed") | Some("after_record") => f.push("no SPH impact in the run".into()),
@@ -113,9 +117,12 @@ fn flat_keel_force_flag(saved: &Saved) -> Option<String> {
 /// about with the square of the entry velocity (Wagner 1932; the analytic models here and the SPH
 /// runs are driven by that velocity). `None` where there is no such comparison.
 fn forcing_flag(s: &Value) -> Option<String> {
-    let rows: Vec<String> = list(s, "comparisons")
+    let velocities: Vec<&Value> = list(s, "comparisons")
         .iter()
         .filter(|c| text(c, "unit") == "m/s")
+        .collect();
+    let rows: Vec<String> = velocities
+        .iter()
         .filter_map(|c| {
             let (v, r) = (num(c, "computed")?, num(c, "reference")?);
             (r > 0.0).then(|| {
@@ -131,10 +138,7 @@ fn forcing_flag(s: &Value) -> Option<String> {
     if rows.is_empty() {
         return None;
     }
-    let first = list(s, "comparisons")
-        .iter()
-        .find(|c| text(c, "unit") == "m/s");
-    let (note, source) = first.map_or(("", ""), |c| (text(c, "note"), text(c, "source")));
+    let (note, source) = (text(velocities[0], "note"), text(velocities[0], "source"));
     Some(format!(
         "Forcing: the keel-entry velocities behind these design values against a published computation \
          of the same hull: {} ({note}; {source}). A slamming pressure grows about with the square of the \
