@@ -126,6 +126,7 @@ fn record(key: &str, s: &RunSummary) -> SphRecord {
                     slamming_peak_pa: slam.map(|p| p.value),
                     slamming_peak_time_s: slam.map(|p| p.time),
                     slamming_impulse_pa_s: slam.map(|p| p.impulse),
+                    rising_at_window_end: a.is_some_and(|a| a.at_window_end),
                     rise_time_s: a.and_then(|a| a.rise_time_s),
                     hydrostatic_pa: a.and_then(|a| a.hydrostatic_at_peak),
                     largest_phase: match later {

@@ -52,6 +52,10 @@ pub struct SphSensor {
     pub slamming_peak_time_s: Option<f64>,
     #[serde(default)]
     pub slamming_impulse_pa_s: Option<f64>,
+    /// The slamming peak is the window's last sample and the record still rises after it: no distinct
+    /// impact peak, the value where the window closes ([`crate::loads::anatomy::Anatomy::at_window_end`]).
+    #[serde(default)]
+    pub rising_at_window_end: bool,
     #[serde(default)]
     pub rise_time_s: Option<f64>,
     #[serde(default)]
@@ -785,6 +789,7 @@ mod tests {
             slamming_peak_pa: Some(peak),
             slamming_peak_time_s: Some(0.05),
             slamming_impulse_pa_s: Some(1.0),
+            rising_at_window_end: false,
             rise_time_s: Some(0.01),
             hydrostatic_pa: Some(10.0),
             largest_phase: Some(Phase::Impact),
