@@ -376,6 +376,9 @@ pub struct DesignValue {
     pub impact: Option<ImpactStatus>,
     /// Time of the SPH slamming peak (s), its impulse over the impact window and rise time.
     pub peak_time_s: Option<f64>,
+    /// The SPH record still rises where the impact window closes: no distinct impact peak, the SPH value
+    /// is the one at the window's end ([`SphSensor::rising_at_window_end`]).
+    pub rising_at_window_end: bool,
     pub impulse: Option<f64>,
     pub rise_time_s: Option<f64>,
     /// Particles across the analytic wetted half-width when the contact crosses the sensor.
@@ -443,6 +446,7 @@ impl DesignValue {
             } else {
                 q.and_then(|q| q.slamming_peak_time_s)
             },
+            rising_at_window_end: !force && q.is_some_and(|q| q.rising_at_window_end),
             impulse: q.and_then(|q| q.slamming_impulse_pa_s),
             rise_time_s: q.and_then(|q| q.rise_time_s),
             particles_across_wetted: q.and_then(|q| q.particles_across_wetted),
