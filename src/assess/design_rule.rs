@@ -20,6 +20,10 @@
 //!   no GCI; U is then the difference between the two levels' peaks, |P - P_2|, so that the design
 //!   value is at least the larger of the two (a rule of this tool: an unconverged value must not
 //!   carry less margin than a converged one);
+//! * SPH record still rising where the impact window closes (no distinct impact peak: the value is the
+//!   window's last sample, and the levels' values are samples at different window ends, so their GCI
+//!   does not measure a peak's convergence): design = max(P + U, A), source `sph (no distinct impact
+//!   peak)` or `analytic (SPH: no distinct impact peak)`, whatever the verdict;
 //! * SPH does not compute the impact (the contact crosses the sensor inside the contact transient, at an
 //!   acoustic speed on a flat keel, after the run, or never): design = A, labelled with the reason; on a
 //!   flat keel the water-hammer pressure rho c_w V (c_w the real sound speed of water) is stated beside it
@@ -63,6 +67,9 @@ pub struct SphQuantity<'a> {
     /// between the reported peak and the next level's, as a fraction of the reported one, which stands
     /// in for the GCI (`None` when that level has no slamming peak).
     pub spread: Option<f64>,
+    /// The record still rises where the impact window closes: the slamming value is the window's last
+    /// sample, not a distinct impact peak ([`crate::loads::anatomy::Anatomy::at_window_end`]).
+    pub rising_at_window_end: bool,
 }
 
 /// The analytic estimate A of one quantity, as the rule takes it.
@@ -213,6 +220,20 @@ pub fn decide(q: Option<SphQuantity>, a: AnalyticPeak) -> Option<Decision> {
     };
     let u = q.gci.or(q.spread).map(|g| g * p.abs());
     let upper = p + u.unwrap_or(0.0);
+    if q.rising_at_window_end {
+        return Some(match a {
+            Some(av) if av > upper => Decision {
+                value: Some(av),
+                source: "analytic (SPH: no distinct impact peak)",
+                uncertainty: u,
+            },
+            _ => Decision {
+                value: Some(upper),
+                source: "sph (no distinct impact peak)",
+                uncertainty: u,
+            },
+        });
+    }
     if shown_converged(q.verdict) {
         return Some(Decision {
             value: Some(upper),
@@ -258,6 +279,7 @@ mod tests {
             verdict: Some(verdict),
             wetted: true,
             spread: None,
+            rising_at_window_end: false,
         }
     }
 
@@ -327,6 +349,19 @@ mod tests {
     }
 
     #[test]
+    fn a_value_still_rising_at_the_window_end_is_not_a_converged_peak() {
+        // an acceptable GCI between two window-end samples does not make a peak: max(P + U, A)
+        let mut r = q(1250.0, Some(0.08), "acceptable");
+        r.rising_at_window_end = true;
+        let d = decide(Some(r), AnalyticPeak::Peak(1500.0)).unwrap();
+        assert_eq!(d.value, Some(1500.0));
+        assert_eq!(d.source, "analytic (SPH: no distinct impact peak)");
+        let d = decide(Some(r), AnalyticPeak::Peak(800.0)).unwrap();
+        assert!((d.value.unwrap() - 1350.0).abs() < 1e-9, "{d:?}");
+        assert_eq!(d.source, "sph (no distinct impact peak)");
+    }
+
+    #[test]
     fn converged_sph_carries_its_band() {
         let d = decide(
             Some(q(2000.0, Some(0.04), "converged")),
@@ -360,6 +395,7 @@ mod tests {
                     verdict: None,
                     wetted: true,
                     spread: None,
+                    rising_at_window_end: false,
                 }),
                 AnalyticPeak::Peak(4000.0),
             )
@@ -375,6 +411,7 @@ mod tests {
             verdict: None,
             wetted: true,
             spread: None,
+            rising_at_window_end: false,
         };
         let d = decide(Some(flat), AnalyticPeak::Absent).unwrap();
         assert_eq!(d.value, None);

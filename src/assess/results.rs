@@ -104,6 +104,7 @@ impl SphSensor {
             verdict: self.convergence.as_deref(),
             wetted: self.wetted,
             spread: self.spread,
+            rising_at_window_end: self.rising_at_window_end,
         }
     }
 }
@@ -315,6 +316,7 @@ impl EventResult {
             verdict: s.force_convergence.as_deref(),
             wetted: true,
             spread: s.force_spread,
+            rising_at_window_end: false,
         });
         decide(
             q,
