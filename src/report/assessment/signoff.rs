@@ -70,6 +70,13 @@ fn flags_of_source(d: &Value) -> Vec<String> {
     if !f.is_empty() {
         return f;
     }
+    if d["rising_at_window_end"].as_bool() == Some(true) {
+        f.push(
+            "no distinct impact peak: the SPH record still rises where the impact window closes, so its \
+             value is the window's last sample, not converged whatever its verdict"
+                .into(),
+        );
+    }
     match d["verdict"].as_str() {
         Some("not_converged") => f.push("SPH not converged".into()),
         Some("mismatched") => f.push("SPH levels show different events".into()),
@@ -189,10 +196,10 @@ pub fn page(r: &mut Report, saved: &Saved) {
     let s = &saved.summary;
     r.para(&format!(
         "Design rule: {}. The SPH value is the slamming peak of the sensor's impact window (the analytic \
-         wetted contact crossing the sensor, widened for the SPH jet root's lag), never a value of the \
-         contact transient or of the end of a run. At a slow entry the widened window reaches into the \
-         immersion: a peak long after the analytic (MLM) peak time of the next table may be a later swing \
-         of the record, not the impact; read it with its history. U is its discretisation uncertainty: \
+         wetted contact crossing the sensor, widened by half its time and by one particle spacing), never a value of the \
+         contact transient or of the end of a run. Where the record still rises as the window closes \
+         there is no distinct impact peak: the value is the window's last sample, flagged, and the design \
+         value is the larger of it (with U) and the analytic one. U is its discretisation uncertainty: \
          the GCI of the matched peaks at the convergence levels (SPH = smoothed-particle hydrodynamics; GCI = Roache's grid \
          convergence index, from two levels with the order 1 assumed unless three give it), or, where the \
          levels' peaks are different events, the difference between them. Verdicts: converged (GCI at \
@@ -275,7 +282,7 @@ pub fn page(r: &mut Report, saved: &Saved) {
     r.push(Block::Table {
         caption: "The governing impact of each panel: SPH impact status, slamming peak time, the impact \
                   window it was taken from (Wagner's contact crossing the panel, widened by half its time \
-                  and by 6 particle spacings of penetration for the SPH jet root's lag), the analytic \
+                  and by one particle spacing of penetration for the SPH contact's lag), the analytic \
                   (MLM) peak time, rise time, impulse over the impact window (the sph_impulse_pa_s column \
                   of pressures.csv is over the whole record), particles across the analytic wetted half-width when \
                   the contact crosses the panel (at the spacing of the keel stage that resolved it, where one did: \
