@@ -70,7 +70,8 @@ fn flags_of_source(d: &Value) -> Vec<String> {
     if !f.is_empty() {
         return f;
     }
-    if d["rising_at_window_end"].as_bool() == Some(true) {
+    let rising = d["rising_at_window_end"].as_bool() == Some(true);
+    if rising {
         f.push(
             "no distinct impact peak: the SPH record still rises where the impact window closes, so its \
              value is the window's last sample, not converged whatever its verdict"
@@ -78,7 +79,8 @@ fn flags_of_source(d: &Value) -> Vec<String> {
         );
     }
     match d["verdict"].as_str() {
-        Some("not_converged") => f.push("SPH not converged".into()),
+        // a rising value's flag already says it is not converged
+        Some("not_converged") if !rising => f.push("SPH not converged".into()),
         Some("mismatched") => f.push("SPH levels show different events".into()),
         Some("not_assessed") => f.push("SPH convergence not assessed".into()),
         _ => {}
