@@ -269,6 +269,19 @@ impl Saved {
         names
     }
 
+    /// The local deadrise (deg) of sensor `name`'s panel: the mean slope of its section's contour over
+    /// the panel's girth span [s - w/2, s + w/2], s the sensor's girth and w the panel width; `None`
+    /// without the hull file.
+    pub fn local_deadrise_deg(&self, name: &str, width: f64) -> Option<f64> {
+        let hull = self.hull.as_ref().ok()?;
+        let sensor = hull.sensors.iter().find(|s| s.name == name)?;
+        let section = hull.section_at(sensor.x).ok()?;
+        let a = section.point_at_girth((sensor.girth - 0.5 * width).max(0.0));
+        let b = section.point_at_girth((sensor.girth + 0.5 * width).min(section.girth()));
+        let (dy, dz) = ((b[0] - a[0]).abs(), (b[1] - a[1]).abs());
+        (dy + dz > 0.0).then(|| dz.atan2(dy).to_degrees())
+    }
+
     /// Girth of a sensor from the keel (m), from the hull file.
     pub fn girth(&self, name: &str) -> Option<f64> {
         self.hull

@@ -34,6 +34,25 @@ fn flags(d: &Value) -> Vec<String> {
     f
 }
 
+/// The local deadrise (deg) from which the nonlinear similarity solution of a constant-speed wedge has
+/// its pressure maximum at the keel, not at the spray root (`src/analytic/similarity_table.rs`: the
+/// maximum moves between 40 and 45 deg): a panel this steep sees no impact pulse pass, only a pressure
+/// that grows towards the keel's as the wetting deepens.
+pub const KEEL_MAXIMUM_FROM_DEG: f64 = 45.0;
+
+/// The flag of a panel with an SPH value whose local deadrise is at least [`KEEL_MAXIMUM_FROM_DEG`].
+fn steep_panel_flag(d: &Value, deadrise_deg: Option<f64>) -> Option<String> {
+    let beta = deadrise_deg.filter(|&b| b >= KEEL_MAXIMUM_FROM_DEG)?;
+    d["sph"].is_number().then(|| {
+        format!(
+            "local deadrise {beta:.1} deg (at least {KEEL_MAXIMUM_FROM_DEG:.0}): the nonlinear wedge \
+             flow has its pressure maximum at the keel, not at the spray root, so no impact pulse \
+             crosses this panel; its SPH value is the largest of a slowly varying pressure in the \
+             window, and the levels' peak times need not match"
+        )
+    })
+}
+
 /// The water-hammer bound of a flat-keel panel's entry `d`, as a parenthesis ("" where there is none).
 fn water_hammer_bound(d: &Value) -> String {
     num(d, "acoustic_bound").map_or(String::new(), |b| {
@@ -258,7 +277,18 @@ pub fn page(r: &mut Report, saved: &Saved) {
                 fmt(num(d, "stage_dp_m"), 1e3, 2),
                 fmt(num(d, "acoustic_bound").filter(|&b| b > 0.0), 1e-3, 0),
             ]);
-            let fl = flags(d);
+            let width = list(st, "sensors")
+                .iter()
+                .find(|x| text(x, "name") == text(d, "name"))
+                .and_then(|x| num(x, "width_m"))
+                .unwrap_or(0.0);
+            let deadrise = saved.local_deadrise_deg(text(d, "name"), width);
+            detail
+                .last_mut()
+                .expect("pushed above")
+                .insert(1, fmt(deadrise, 1.0, 1));
+            let mut fl = flags(d);
+            fl.extend(steep_panel_flag(d, deadrise));
             if !fl.is_empty() {
                 flagged.push(format!("{}: {}", text(d, "name"), fl.join("; ")));
             }
@@ -282,7 +312,8 @@ pub fn page(r: &mut Report, saved: &Saved) {
         rows,
     });
     r.push(Block::Table {
-        caption: "The governing impact of each panel: SPH impact status, slamming peak time, the impact \
+        caption: "The governing impact of each panel: the local deadrise (the contour's mean slope over the \
+                  panel; from 45 deg the similarity solution's pressure maximum is at the keel), SPH impact status, slamming peak time, the impact \
                   window it was taken from (Wagner's contact crossing the panel, widened by half its time \
                   and by one particle spacing of penetration for the SPH contact's lag), the analytic \
                   (MLM) peak time, rise time, impulse over the impact window (the sph_impulse_pa_s column \
@@ -294,6 +325,7 @@ pub fn page(r: &mut Report, saved: &Saved) {
             .into(),
         header: [
             "panel",
+            "local deadrise deg",
             "SPH impact",
             "peak ms",
             "window ms",
