@@ -441,8 +441,24 @@ pub fn page(r: &mut Report, saved: &Saved) {
 
 #[cfg(test)]
 mod tests {
-    use super::forcing_flag;
+    use super::{flags, forcing_flag, steep_panel_flag};
     use serde_json::json;
+
+    #[test]
+    fn steep_panels_and_rising_records_are_flagged() {
+        let d = json!({"name": "S093-2", "sph": 2636.0, "verdict": "not_converged",
+                       "rising_at_window_end": true});
+        let f = steep_panel_flag(&d, Some(46.2)).unwrap();
+        assert!(f.contains("local deadrise 46.2 deg"), "{f}");
+        assert!(steep_panel_flag(&d, Some(44.6)).is_none());
+        assert!(steep_panel_flag(&d, None).is_none());
+        // no SPH value: nothing about its record to flag
+        assert!(steep_panel_flag(&json!({"name": "S227-3"}), Some(49.0)).is_none());
+        // a rising record's flag, and the verdict's not repeated
+        let f = flags(&d).join("; ");
+        assert!(f.contains("no distinct impact peak"), "{f}");
+        assert!(!f.contains("SPH not converged"), "{f}");
+    }
 
     #[test]
     fn the_forcing_flag_gives_each_velocity_ratio_and_its_square() {
