@@ -265,8 +265,15 @@ pub fn page(r: &mut Report, saved: &Saved) {
                 speed_text(num(d, "speed_m_per_s")),
             ]);
             let (window, analytic_time) = governing_timing(saved, f, d);
+            let width = list(st, "sensors")
+                .iter()
+                .find(|x| text(x, "name") == text(d, "name"))
+                .and_then(|x| num(x, "width_m"))
+                .unwrap_or(0.0);
+            let deadrise = saved.local_deadrise_deg(text(d, "name"), width);
             detail.push(vec![
                 text(d, "name").to_string(),
+                fmt(deadrise, 1.0, 1),
                 text(d, "impact").replace('_', " "),
                 fmt(num(d, "peak_time_s"), 1e3, 1),
                 window,
@@ -277,16 +284,6 @@ pub fn page(r: &mut Report, saved: &Saved) {
                 fmt(num(d, "stage_dp_m"), 1e3, 2),
                 fmt(num(d, "acoustic_bound").filter(|&b| b > 0.0), 1e-3, 0),
             ]);
-            let width = list(st, "sensors")
-                .iter()
-                .find(|x| text(x, "name") == text(d, "name"))
-                .and_then(|x| num(x, "width_m"))
-                .unwrap_or(0.0);
-            let deadrise = saved.local_deadrise_deg(text(d, "name"), width);
-            detail
-                .last_mut()
-                .expect("pushed above")
-                .insert(1, fmt(deadrise, 1.0, 1));
             let mut fl = flags(d);
             fl.extend(steep_panel_flag(d, deadrise));
             if !fl.is_empty() {
@@ -312,8 +309,10 @@ pub fn page(r: &mut Report, saved: &Saved) {
         rows,
     });
     r.push(Block::Table {
-        caption: "The governing impact of each panel: the local deadrise (the contour's mean slope over the \
-                  panel; from 45 deg the similarity solution's pressure maximum is at the keel), SPH impact status, slamming peak time, the impact \
+        caption: format!(
+            "The governing impact of each panel: the local deadrise (the contour's mean slope over the \
+             panel; from {KEEL_MAXIMUM_FROM_DEG:.0} deg the similarity solution's pressure maximum is at \
+             the keel), SPH impact status, slamming peak time, the impact \
                   window it was taken from (Wagner's contact crossing the panel, widened by half its time \
                   and by one particle spacing of penetration for the SPH contact's lag), the analytic \
                   (MLM) peak time, rise time, impulse over the impact window (the sph_impulse_pa_s column \
@@ -322,7 +321,7 @@ pub fn page(r: &mut Report, saved: &Saved) {
                   a fine run of the section's lower part, see the SPH notes), and the water-hammer bound rho c_w V of a flat keel \
                   (an upper bound without air; averaged over the panel, so a panel reaching beyond the flat \
                   reads less than rho c_w V); \"-\": not applicable to the panel's impact"
-            .into(),
+        ),
         header: [
             "panel",
             "local deadrise deg",
