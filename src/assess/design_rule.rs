@@ -220,19 +220,26 @@ pub fn decide(q: Option<SphQuantity>, a: AnalyticPeak) -> Option<Decision> {
     };
     let u = q.gci.or(q.spread).map(|g| g * p.abs());
     let upper = p + u.unwrap_or(0.0);
-    if q.rising_at_window_end {
-        return Some(match a {
+    // the larger of the SPH upper end and the analytic peak, labelled by which one it is
+    let larger = |sph: &'static str, analytic: &'static str| {
+        Some(match a {
             Some(av) if av > upper => Decision {
                 value: Some(av),
-                source: "analytic (SPH: no distinct impact peak)",
+                source: analytic,
                 uncertainty: u,
             },
             _ => Decision {
                 value: Some(upper),
-                source: "sph (no distinct impact peak)",
+                source: sph,
                 uncertainty: u,
             },
-        });
+        })
+    };
+    if q.rising_at_window_end {
+        return larger(
+            "sph (no distinct impact peak)",
+            "analytic (SPH: no distinct impact peak)",
+        );
     }
     if shown_converged(q.verdict) {
         return Some(Decision {
@@ -245,18 +252,7 @@ pub fn decide(q: Option<SphQuantity>, a: AnalyticPeak) -> Option<Decision> {
             uncertainty: u,
         });
     }
-    match a {
-        Some(av) if av > upper => Some(Decision {
-            value: Some(av),
-            source: "analytic (SPH not converged)",
-            uncertainty: u,
-        }),
-        _ => Some(Decision {
-            value: Some(upper),
-            source: "sph (not converged)",
-            uncertainty: u,
-        }),
-    }
+    larger("sph (not converged)", "analytic (SPH not converged)")
 }
 
 /// The source of a panel on a flat keel in a run with air ([`ImpactStatus::Cushioned`]): no design
