@@ -72,12 +72,22 @@ pub const CP_MAX: [f64; 11] = [
 /// The stated error of the corrected MLM wedge peak against the similarity Cp_max, 5-55 deg (a
 /// fraction): the interpolation error of this table plus the MLM's peak search. Measured against fresh
 /// solves half-way between the nodes: -0.03 % at 12.5 deg, 0.00 % at 27.5 deg, +1.9 % at 42.5 deg (the
-/// similarity maximum moves from the spray root to the keel between 40 and 45 deg, a kink in Cp_max
+/// similarity maximum moves from the spray root to the keel at 42.2 deg, [`KEEL_MAXIMUM_FROM_DEG`], a kink in Cp_max
 /// that the interpolation rounds off); at the nodes within 0.5 % (the peak search). Stated as 2.5 %.
 pub const STATED_ERROR: f64 = 0.025;
 
 /// Largest local deadrise with a tabulated value (deg).
 pub const MAX_DEG: f64 = 55.0;
+
+/// The deadrise (deg) from which the similarity solution's pressure maximum is at the keel, not at the
+/// spray root (the solver on its default grid: the spray-root maximum 2.823 against 2.809 at the keel at
+/// 42.05 deg, the keel's 2.793 against 2.7935 at 42.2 deg; test `the_maximum_moves_to_the_keel`). From
+/// about 41 to 45 deg the two differ by under 1 %: the pressure along the lower side is nearly flat
+/// (Cp 2.29-2.52 over z/(V t) from -0.9 to 0.3 at 45 deg). A sensor on a side this steep sees no
+/// impact pulse pass: at constant speed its pressure 1/2 rho V^2 Cp(z_s / (V t)) grows towards the
+/// keel's value as the wetting deepens and falls only as the entry slows, so the largest value of its
+/// impact window is a level, not the peak of an event ([`crate::loads::anatomy`]).
+pub const KEEL_MAXIMUM_FROM_DEG: f64 = 42.2;
 
 /// The MLM's constant-speed wedge peak pressure coefficient pi^2 / (4 sin^2 beta) - sin^2 beta.
 pub fn mlm_wedge_cp_max(beta: f64) -> f64 {
@@ -150,6 +160,35 @@ mod tests {
         assert_eq!(peak_correction(0.0).factor, 1.0);
         let high = peak_correction(70f64.to_radians());
         assert!(high.above_table && high.factor == k(55.0));
+    }
+
+    /// The copy is the solver's: fresh solves at 5, 10 and 20 deg on the default grid give the tabulated
+    /// Cp_max.
+    #[test]
+    fn the_table_is_the_solver_s() {
+        for k in [0, 1, 3] {
+            let s = crate::analytic::similarity::solve(DEADRISE_DEG[k]).unwrap();
+            assert!(
+                (s.cp_max / CP_MAX[k] - 1.0).abs() < 1e-5,
+                "{} deg: solver {} table {}",
+                DEADRISE_DEG[k],
+                s.cp_max,
+                CP_MAX[k]
+            );
+        }
+    }
+
+    /// Below [`KEEL_MAXIMUM_FROM_DEG`] the maximum is near the spray root (above the calm surface), from
+    /// it on at the keel's panel (z/(V t) near -1).
+    #[test]
+    fn the_maximum_moves_to_the_keel() {
+        use crate::analytic::similarity::solve;
+        let below = solve(KEEL_MAXIMUM_FROM_DEG - 0.2).unwrap();
+        let above = solve(KEEL_MAXIMUM_FROM_DEG + 0.1).unwrap();
+        assert!(below.z_cp_max > 0.0, "{}", below.z_cp_max);
+        assert!(above.z_cp_max < -0.8, "{}", above.z_cp_max);
+        // the side is nearly flat there: the keel's value within 1 % of the maximum below the angle
+        assert!(below.pressure[0][1] > 0.99 * below.cp_max);
     }
 
     /// Issue 28 item 2, measurement: at every 2.5 deg from 5 to 55 deg the fresh similarity Cp_max

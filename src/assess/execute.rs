@@ -144,6 +144,7 @@ fn record(key: &str, s: &RunSummary) -> SphRecord {
                             .map(|c| c / q.stage.map_or(s.dp_m, |r| r.dp_m))
                     }),
                     stage_dp_m: q.stage.map(|r| r.dp_m),
+                    local_deadrise_deg: a.and_then(|a| a.local_deadrise_deg),
                 }
             })
             .collect(),

@@ -79,6 +79,11 @@ pub struct SphSensor {
     /// when the record is the main run's.
     #[serde(default)]
     pub stage_dp_m: Option<f64>,
+    /// The local deadrise of the sensor's integration span (deg); from
+    /// [`crate::loads::anatomy::KEEL_MAXIMUM_FROM_DEG`] on, the record has no impact pulse and its
+    /// convergence levels are compared by value ([`crate::loads::anatomy::matched`]).
+    #[serde(default)]
+    pub local_deadrise_deg: Option<f64>,
 }
 
 impl SphSensor {
@@ -387,6 +392,8 @@ pub struct DesignValue {
     pub particles_across_wetted: Option<f64>,
     /// The spacing (m) of the keel stage the SPH value comes from, when a stage resolved the sensor.
     pub stage_dp_m: Option<f64>,
+    /// The local deadrise of the sensor's SPH integration span (deg), [`SphSensor::local_deadrise_deg`].
+    pub local_deadrise_deg: Option<f64>,
     /// The largest SPH value of the governing event where it comes after the impact (immersion phase) and
     /// exceeds the design value ([`SphSensor::later_load`]).
     pub later_load: Option<f64>,
@@ -453,6 +460,7 @@ impl DesignValue {
             rise_time_s: q.and_then(|q| q.rise_time_s),
             particles_across_wetted: q.and_then(|q| q.particles_across_wetted),
             stage_dp_m: q.and_then(|q| q.stage_dp_m),
+            local_deadrise_deg: q.and_then(|q| q.local_deadrise_deg),
             later_load: q.and_then(|q| q.later_load(d.value)),
             later_load_hydrostatic: q
                 .filter(|q| q.later_load(d.value).is_some())
@@ -804,6 +812,7 @@ mod tests {
             spread: None,
             particles_across_wetted: Some(12.0),
             stage_dp_m: None,
+            local_deadrise_deg: Some(30.0),
         }
     }
 

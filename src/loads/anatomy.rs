@@ -29,6 +29,13 @@
 //! 4. **Record end**, the last [`RECORD_END_FRACTION`] of the record: a value there may be cut off by the
 //!    end of the run (a load still rising), so it is never a design value.
 //!
+//! **A steep side has no impact pulse.** Where the sensor's local deadrise (the slope of the chord of its
+//! span on the contour) is at least [`KEEL_MAXIMUM_FROM_DEG`], the nonlinear similarity flow of the local
+//! wedge has its pressure maximum at the keel, not at the spray root: at constant speed the sensor's
+//! pressure grows towards the keel's value as the wetting deepens, and falls only as the entry slows.
+//! The largest value in its window is then a level, not the peak of an event, and two resolutions'
+//! values are compared by value, not by the times at which they occur ([`matched`]).
+//!
 //! A sensor's **slamming peak** is the largest value in its impact window, outside the contact transient
 //! and the record end, leaving out isolated single-sample spikes (a sample more than [`SPIKE_RATIO`] times
 //! both of its neighbours, which no physical pressure pulse resolved by several samples can produce).
@@ -62,6 +69,10 @@ pub const SPIKE_RATIO: f64 = 2.0;
 /// Two peaks at successive resolutions are the same physical event when their times differ by at most
 /// this fraction of the impact duration ([`ImpactWindow::duration`]).
 pub const MATCH_FRACTION: f64 = 0.25;
+
+/// The local deadrise (deg) from which a sensor's record has no impact pulse: the similarity solution's
+/// pressure maximum is at the keel ([`crate::analytic::similarity_table::KEEL_MAXIMUM_FROM_DEG`]).
+pub use crate::analytic::similarity_table::KEEL_MAXIMUM_FROM_DEG;
 
 /// The phase of a time in a record.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -195,6 +206,9 @@ pub struct Expectation {
     /// The analytic contact half-width when the contact has crossed the record's sensor (m), where it
     /// crosses it at all.
     pub crossing_half_width_m: Option<f64>,
+    /// The local deadrise of the record's sensor (deg): the slope of the chord of its integration span
+    /// on the contour; `None` for the section force.
+    pub local_deadrise_deg: Option<f64>,
 }
 
 /// The anatomy of one record.
@@ -231,9 +245,20 @@ pub struct Anatomy {
     /// record was below a tenth of the peak.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub rise_time_s: Option<f64>,
+    /// The local deadrise of the sensor (deg), as in [`Expectation::local_deadrise_deg`].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub local_deadrise_deg: Option<f64>,
 }
 
 impl Anatomy {
+    /// The sensor's side is steep enough that no impact pulse crosses it (local deadrise at least
+    /// [`KEEL_MAXIMUM_FROM_DEG`]): its slamming value is the largest of a slowly varying pressure in the
+    /// window, a level rather than the peak of an event.
+    pub fn without_pulse(&self) -> bool {
+        self.local_deadrise_deg
+            .is_some_and(|b| b >= KEEL_MAXIMUM_FROM_DEG)
+    }
+
     /// The slamming value net of the hydrostatic part.
     pub fn slamming_net(&self) -> Option<f64> {
         self.slamming_peak
@@ -339,6 +364,7 @@ pub fn anatomy(t: &[f64], x: &[f64], e: &Expectation, hydrostatic: &dyn Fn(f64) 
         spikes: spikes.iter().filter(|&&s| s).count(),
         crossing_half_width_m: e.crossing_half_width_m,
         rise_time_s: None,
+        local_deadrise_deg: e.local_deadrise_deg,
     };
     let Some(w) = e.window else {
         return out;
@@ -392,7 +418,9 @@ pub fn time_reaching(t: &[f64], c: &[f64], y: f64) -> Option<f64> {
 
 /// Two slamming peaks at successive resolutions are the same physical event when both are resolved and
 /// their times differ by at most [`MATCH_FRACTION`] of the finer run's impact duration; `Err` says why
-/// not.
+/// not. On a sensor without an impact pulse ([`Anatomy::without_pulse`]) the two values are the largest
+/// of the same slowly varying pressure in the window, whose time is not an event's: both resolved is
+/// enough, and the levels are compared by value.
 pub fn matched(fine: &Anatomy, coarse: &Anatomy) -> std::result::Result<(), String> {
     let (Some(pf), Some(w)) = (&fine.slamming_peak, &fine.window) else {
         return Err(format!(
@@ -407,7 +435,7 @@ pub fn matched(fine: &Anatomy, coarse: &Anatomy) -> std::result::Result<(), Stri
         ));
     };
     let tol = MATCH_FRACTION * w.duration();
-    if (pf.time - pc.time).abs() > tol {
+    if !fine.without_pulse() && (pf.time - pc.time).abs() > tol {
         return Err(format!(
             "the peaks are different events: {:.1} ms against {:.1} ms, more than {:.0} % of the {:.1} ms \
              impact duration apart",
@@ -438,6 +466,7 @@ mod tests {
             },
             transient_end_s: tr,
             crossing_half_width_m: None,
+            local_deadrise_deg: None,
         }
     }
 
@@ -563,6 +592,7 @@ mod tests {
             spikes: 0,
             crossing_half_width_m: None,
             rise_time_s: None,
+            local_deadrise_deg: None,
         };
         // S174-1, S174-2, S227-4 and the 0.227 Lpp section force: windows of about the crossing times
         for (fine, coarse, lo, hi) in [
@@ -583,5 +613,38 @@ mod tests {
         none.slamming_peak = None;
         let why = matched(&mk(0.031, w), &none).unwrap_err();
         assert!(why.contains("companion has no peak"), "{why}");
+    }
+
+    #[test]
+    fn levels_of_a_steep_side_are_compared_by_value_not_time() {
+        // a side of S174-3's 50 deg: the fine run's largest value at 25.7 ms, the companion's at 37 ms,
+        // both in the window of 7.5-47.0 ms, more than a quarter of the 25 ms crossing apart
+        let w = ImpactWindow::around(0.015, 0.025, 0.0104, 1.1);
+        let mk = |t: f64, deg: Option<f64>| {
+            let e = Expectation {
+                window: Some(w),
+                status: ImpactStatus::Resolved,
+                transient_end_s: 0.0,
+                crossing_half_width_m: None,
+                local_deadrise_deg: deg,
+            };
+            let tt: Vec<f64> = (0..=1000).map(|k| k as f64 * 1e-4).collect();
+            let x: Vec<f64> = tt
+                .iter()
+                .map(|&s| (-((s - t) / 0.004).powi(2)).exp())
+                .collect();
+            anatomy(&tt, &x, &e, &|_| 0.0)
+        };
+        let steep = KEEL_MAXIMUM_FROM_DEG + 7.8;
+        assert!(mk(0.0257, Some(steep)).without_pulse());
+        assert!(matched(&mk(0.0257, Some(steep)), &mk(0.037, Some(steep))).is_ok());
+        // the same times on a side below the angle are different events
+        let low = KEEL_MAXIMUM_FROM_DEG - 4.2;
+        assert!(!mk(0.0257, Some(low)).without_pulse());
+        assert!(matched(&mk(0.0257, Some(low)), &mk(0.037, Some(low))).is_err());
+        // steep or not, a companion without a value in the window does not match
+        let mut none = mk(0.037, Some(steep));
+        none.slamming_peak = None;
+        assert!(matched(&mk(0.0257, Some(steep)), &none).is_err());
     }
 }

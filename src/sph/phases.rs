@@ -140,20 +140,31 @@ impl<'a> RunPhases<'a> {
 
     /// The expectation of the sensor integrated over the contour span [s0, s1] (m from the keel).
     pub fn sensor_expectation(&self, span: [f64; 2]) -> Expectation {
+        let ends = (
+            point_at_arc(self.section, span[0]),
+            point_at_arc(self.section, span[1]),
+        );
+        let local_deadrise_deg = match ends {
+            (Some(a), Some(b)) => {
+                let (dy, dz) = ((b[0] - a[0]).abs(), (b[1] - a[1]).abs());
+                (dy + dz > 0.0).then(|| dz.atan2(dy).to_degrees())
+            }
+            _ => None,
+        };
         let none = |status, half_width| Expectation {
             window: None,
             status,
             transient_end_s: self.transient_end_s,
             crossing_half_width_m: half_width,
+            local_deadrise_deg,
         };
         let Some(w) = &self.wagner else {
             return none(ImpactStatus::NotCrossed, None);
         };
-        let edge = |s: f64| point_at_arc(self.section, s).map(|p| p[0].abs());
-        let (Some(a), Some(b)) = (edge(span[0]), edge(span[1])) else {
+        let (Some(a), Some(b)) = ends else {
             return none(ImpactStatus::NotCrossed, None);
         };
-        let (y_lo, y_hi) = (a.min(b), a.max(b));
+        let (y_lo, y_hi) = (a[0].abs().min(b[0].abs()), a[0].abs().max(b[0].abs()));
         let c_start = w.half_width[0];
         if self.d0 > 0.0 && y_hi <= c_start {
             return none(ImpactStatus::WettedAtStart, None);
@@ -180,6 +191,7 @@ impl<'a> RunPhases<'a> {
                 status: ImpactStatus::Cushioned,
                 transient_end_s: self.transient_end_s,
                 crossing_half_width_m: Some(y_hi),
+                local_deadrise_deg,
             };
         }
         if acoustic {
@@ -194,6 +206,7 @@ impl<'a> RunPhases<'a> {
             status: ImpactStatus::Resolved,
             transient_end_s: self.transient_end_s,
             crossing_half_width_m: Some(y_hi),
+            local_deadrise_deg,
         }
     }
 
@@ -229,6 +242,7 @@ impl<'a> RunPhases<'a> {
             status: ImpactStatus::Resolved,
             transient_end_s: self.transient_end_s,
             crossing_half_width_m: None,
+            local_deadrise_deg: None,
         };
         let hull_section = crate::hull::Section::new(self.section.half_points().to_vec());
         let hydro = |t: f64| self.rho * G * hull_section.properties(self.keel_depth(t)).area;

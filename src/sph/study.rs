@@ -168,6 +168,13 @@ fn slamming_statement(levels: &[&ReportedPeak], dp: &[f64]) -> PeakConvergence {
     let mut c = assess(name, unit, &dp[..n], &values);
     c.dp_m = dp.to_vec();
     c.values = levels.iter().map(|p| p.value).collect();
+    if let (true, Some(b)) = (n > 1 && fine.without_pulse(), fine.local_deadrise_deg) {
+        c.statement.push_str(&format!(
+            "; a side of {b:.1} deg local deadrise (at least {:.1}): no impact pulse crosses it, so the \
+             levels' largest values in the impact window are compared, not their times",
+            crate::loads::anatomy::KEEL_MAXIMUM_FROM_DEG
+        ));
+    }
     if let Some(why) = why {
         let at = dp[n] * 1e3;
         if n == 1 {
@@ -408,6 +415,7 @@ mod tests {
                 spikes: 0,
                 crossing_half_width_m: None,
                 rise_time_s: None,
+                local_deadrise_deg: None,
             }),
         }
     }

@@ -8,6 +8,7 @@ use serde_json::Value;
 
 use super::Report;
 use super::data::{Saved, at, fmt, list, num, speed_text, text};
+use crate::loads::anatomy::KEEL_MAXIMUM_FROM_DEG;
 use crate::report::document::Block;
 
 /// The verdict as words ("-" where none applies).
@@ -34,21 +35,19 @@ fn flags(d: &Value) -> Vec<String> {
     f
 }
 
-/// The local deadrise (deg) from which the nonlinear similarity solution of a constant-speed wedge has
-/// its pressure maximum at the keel, not at the spray root (`src/analytic/similarity_table.rs`: the
-/// maximum moves between 40 and 45 deg): a panel this steep sees no impact pulse pass, only a pressure
-/// that grows towards the keel's as the wetting deepens.
-pub const KEEL_MAXIMUM_FROM_DEG: f64 = 45.0;
-
-/// The flag of a panel with an SPH value whose local deadrise is at least [`KEEL_MAXIMUM_FROM_DEG`].
+/// The flag of a panel with an SPH value whose local deadrise is at least [`KEEL_MAXIMUM_FROM_DEG`]
+/// (`src/analytic/similarity_table.rs`: from there the similarity solution's pressure maximum is at the
+/// keel, so a panel this steep sees no impact pulse pass, only a pressure that grows towards the keel's
+/// as the wetting deepens; `src/loads/anatomy.rs` compares its levels by value).
 fn steep_panel_flag(d: &Value, deadrise_deg: Option<f64>) -> Option<String> {
     let beta = deadrise_deg.filter(|&b| b >= KEEL_MAXIMUM_FROM_DEG)?;
     d["sph"].is_number().then(|| {
         format!(
-            "local deadrise {beta:.1} deg (at least {KEEL_MAXIMUM_FROM_DEG:.0}): the nonlinear wedge \
+            "local deadrise {beta:.1} deg (at least {KEEL_MAXIMUM_FROM_DEG:.1}): the nonlinear wedge \
              flow has its pressure maximum at the keel, not at the spray root, so no impact pulse \
              crosses this panel; its SPH value is the largest of a slowly varying pressure in the \
-             window, and the levels' peak times need not match"
+             window, and its convergence levels are compared by value, not by the time of their largest \
+             values"
         )
     })
 }
@@ -270,7 +269,9 @@ pub fn page(r: &mut Report, saved: &Saved) {
                 .find(|x| text(x, "name") == text(d, "name"))
                 .and_then(|x| num(x, "width_m"))
                 .unwrap_or(0.0);
-            let deadrise = saved.local_deadrise_deg(text(d, "name"), width);
+            // the SPH run's own (its integration span), else the panel's from the hull file
+            let deadrise = num(d, "local_deadrise_deg")
+                .or_else(|| saved.local_deadrise_deg(text(d, "name"), width));
             detail.push(vec![
                 text(d, "name").to_string(),
                 fmt(deadrise, 1.0, 1),
@@ -311,8 +312,9 @@ pub fn page(r: &mut Report, saved: &Saved) {
     r.push(Block::Table {
         caption: format!(
             "The governing impact of each panel: the local deadrise (the contour's mean slope over the \
-             panel; from {KEEL_MAXIMUM_FROM_DEG:.0} deg the similarity solution's pressure maximum is at \
-             the keel), SPH impact status, slamming peak time, the impact \
+             span the SPH run integrates, the panel widened to four particle spacings where narrower, or \
+             over the panel without SPH; from {KEEL_MAXIMUM_FROM_DEG:.1} deg the similarity solution's \
+             pressure maximum is at the keel), SPH impact status, slamming peak time, the impact \
                   window it was taken from (Wagner's contact crossing the panel, widened by half its time \
                   and by one particle spacing of penetration for the SPH contact's lag), the analytic \
                   (MLM) peak time, rise time, impulse over the impact window (the sph_impulse_pa_s column \
@@ -449,7 +451,7 @@ mod tests {
                        "rising_at_window_end": true});
         let f = steep_panel_flag(&d, Some(46.2)).unwrap();
         assert!(f.contains("local deadrise 46.2 deg"), "{f}");
-        assert!(steep_panel_flag(&d, Some(44.6)).is_none());
+        assert!(steep_panel_flag(&d, Some(42.0)).is_none());
         assert!(steep_panel_flag(&d, None).is_none());
         // no SPH value: nothing about its record to flag
         assert!(steep_panel_flag(&json!({"name": "S227-3"}), Some(49.0)).is_none());
