@@ -89,27 +89,54 @@ pub struct BowForce {
     pub note: Option<String>,
 }
 
-/// The verdict of a total over `stations` ([`BowForce::verdict`]).
+/// The verdict of a total over `stations` ([`BowForce::verdict`]): converged where every slamming
+/// station's section force is an SPH force shown converged (converged or acceptable); otherwise which
+/// stations take the analytic (generalised Wagner) force because no SPH ran at them in this event, and
+/// which have an SPH force not shown converged, with its verdict.
 fn total_verdict(stations: &[StationForce]) -> String {
     let slamming: Vec<&StationForce> = stations
         .iter()
         .filter(|s| s.section_force_peak_n_per_m > 0.0)
         .collect();
-    let not: Vec<String> = slamming
+    if slamming.is_empty() {
+        return "no slamming station".into();
+    }
+    let (analytic, sph): (Vec<&StationForce>, Vec<&StationForce>) =
+        slamming.iter().partition(|s| s.source == "analytic");
+    let unconverged: Vec<String> = sph
         .iter()
         .filter(|s| !super::design_rule::shown_converged(s.verdict.as_deref()))
-        .map(|s| format!("{} ({})", s.station, s.source))
+        .map(|s| {
+            format!(
+                "{} ({}, verdict {})",
+                s.station,
+                s.source,
+                s.verdict
+                    .as_deref()
+                    .unwrap_or("not assessed")
+                    .replace('_', " ")
+            )
+        })
         .collect();
-    if slamming.is_empty() {
-        "no slamming station".into()
-    } else if not.is_empty() {
-        "converged: every station's SPH section force is converged or acceptable".into()
-    } else {
-        format!(
-            "not shown converged at stations {}: their design forces are taken by the design rule",
-            not.join(", ")
-        )
+    if analytic.is_empty() && unconverged.is_empty() {
+        return "converged: every station's SPH section force is converged or acceptable".into();
     }
+    let mut parts = Vec::new();
+    if !analytic.is_empty() {
+        let list: Vec<String> = analytic.iter().map(|s| s.station.to_string()).collect();
+        parts.push(format!(
+            "at stations {} no SPH ran in this event: their force is the analytic estimate (generalised \
+             Wagner), which has no convergence to show",
+            list.join(", ")
+        ));
+    }
+    if !unconverged.is_empty() {
+        parts.push(format!(
+            "at stations {} the SPH section force is not shown converged: the design rule's value is used",
+            unconverged.join(", ")
+        ));
+    }
+    format!("not shown converged as a whole: {}", parts.join("; "))
 }
 
 /// Linear interpolation in a history [t, f], 0 outside it.
@@ -224,6 +251,33 @@ mod tests {
         assert!((x - 22.0 / 18.0).abs() < 1e-12, "{x}");
         assert!(integrate(&[1.0], &[5.0]).is_none());
         assert!(integrate(&[0.0, 1.0], &[0.0, 0.0]).is_none());
+    }
+
+    #[test]
+    fn the_verdict_tells_analytic_stations_from_unconverged_ones() {
+        let st = |station: f64, source: &'static str, verdict: Option<&str>| StationForce {
+            station,
+            x_m: station,
+            section_force_peak_n_per_m: 1000.0,
+            source,
+            verdict: verdict.map(String::from),
+        };
+        let v = total_verdict(&[
+            st(0.093, "analytic", None),
+            st(0.133, "sph (converged)", Some("converged")),
+            st(0.227, "sph (not converged)", Some("not_converged")),
+        ]);
+        assert!(v.contains("at stations 0.093 no SPH ran"), "{v}");
+        assert!(
+            v.contains("0.227 (sph (not converged), verdict not converged)"),
+            "{v}"
+        );
+        assert!(!v.contains("0.133"), "{v}");
+        let v = total_verdict(&[
+            st(0.093, "sph (converged)", Some("converged")),
+            st(0.133, "sph (acceptable)", Some("acceptable")),
+        ]);
+        assert!(v.starts_with("converged"), "{v}");
     }
 
     #[test]

@@ -25,7 +25,27 @@ fn waves(saved: &Saved) -> Vec<String> {
             w.push(n);
         }
     }
-    w
+    w.iter().map(|n| wave_words(saved, n)).collect()
+}
+
+/// A regular wave's name with its height and period spelled out from `motions.json`, where it is there
+/// ("H0.20-T2.0 (height 0.20 m, period 2.00 s)"); the period is 2 pi / omega of the wave frequency.
+fn wave_words(saved: &Saved, name: &str) -> String {
+    let found = saved.motions.as_ref().and_then(|m| {
+        list(m, "speeds")
+            .iter()
+            .flat_map(|s| list(s, "regular"))
+            .find(|r| text(r, "wave") == name)
+    });
+    let parts =
+        found.and_then(|r| Some((num(r, "height_m")?, num(r, "wave_frequency_rad_per_s")?)));
+    match parts {
+        Some((h, w)) if w > 0.0 => {
+            let period = std::f64::consts::TAU / w;
+            format!("{name} (height {h:.2} m, period {period:.2} s)")
+        }
+        _ => name.to_string(),
+    }
 }
 
 pub fn title(r: &mut Report, saved: &Saved, stamp: Option<String>) {
