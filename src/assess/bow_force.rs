@@ -121,18 +121,21 @@ fn total_verdict(stations: &[StationForce]) -> String {
     if analytic.is_empty() && unconverged.is_empty() {
         return "converged: every station's SPH section force is converged or acceptable".into();
     }
+    let stations_word = |n: usize| if n == 1 { "station" } else { "stations" };
     let mut parts = Vec::new();
     if !analytic.is_empty() {
         let list: Vec<String> = analytic.iter().map(|s| s.station.to_string()).collect();
         parts.push(format!(
-            "at stations {} no SPH ran in this event: their force is the analytic estimate (generalised \
+            "at {} {} no SPH ran in this event: the force there is the analytic estimate (generalised \
              Wagner), which has no convergence to show",
+            stations_word(list.len()),
             list.join(", ")
         ));
     }
     if !unconverged.is_empty() {
         parts.push(format!(
-            "at stations {} the SPH section force is not shown converged: the design rule's value is used",
+            "at {} {} the SPH section force is not shown converged: the design rule's value is used",
+            stations_word(unconverged.len()),
             unconverged.join(", ")
         ));
     }
