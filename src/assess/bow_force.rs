@@ -270,7 +270,7 @@ mod tests {
             st(0.133, "sph (converged)", Some("converged")),
             st(0.227, "sph (not converged)", Some("not_converged")),
         ]);
-        assert!(v.contains("at stations 0.093 no SPH ran"), "{v}");
+        assert!(v.contains("at station 0.093 no SPH ran"), "{v}");
         assert!(
             v.contains("0.227 (sph (not converged), verdict not converged)"),
             "{v}"
