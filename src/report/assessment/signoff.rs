@@ -225,12 +225,15 @@ pub fn page(r: &mut Report, saved: &Saved) {
          levels' peaks are different events, the difference between them. Verdicts: converged (GCI at \
          most 5 %), acceptable (at most 20 %), not converged (above 20 %: refine before relying on the \
          SPH value), mismatched (the coarser level's peak is another event), not assessed (one level, \
-         or no SPH impact). A panel with no design value (\"-\") is one no model here computes. \
+         or no SPH impact). On a panel of {:.1} deg local deadrise or more the similarity solution's \
+         pressure maximum is at the keel and no impact pulse crosses the panel: its levels are compared \
+         by value, whatever their times. A panel with no design value (\"-\") is one no model here computes. \
          Analytic: the modified Logvinovich model (MLM) for pressures, generalised Wagner for forces. \
          SPH pressures are totals, hydrostatic part included; the analytic (MLM) pressures are \
          hydrodynamic only. The hydrostatic column is the part at the time of the SPH peak, given apart as \
          class rules treat them apart (it is not in an analytic design value). Density {} kg/m3.",
         text(&s["settings"], "design_value"),
+        KEEL_MAXIMUM_FROM_DEG,
         fmt(num(&s["settings"], "water_density_kg_m3"), 1.0, 1)
     ));
     if list(s, "irregular").is_empty() {
