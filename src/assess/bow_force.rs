@@ -101,8 +101,9 @@ fn total_verdict(stations: &[StationForce]) -> String {
     if slamming.is_empty() {
         return "no slamming station".into();
     }
-    let (analytic, sph): (Vec<&StationForce>, Vec<&StationForce>) =
-        slamming.iter().partition(|s| s.source == "analytic");
+    let (analytic, sph): (Vec<&StationForce>, Vec<&StationForce>) = slamming
+        .iter()
+        .partition(|s| s.source == super::design_rule::ANALYTIC_WITHOUT_SPH);
     let unconverged: Vec<String> = sph
         .iter()
         .filter(|s| !super::design_rule::shown_converged(s.verdict.as_deref()))

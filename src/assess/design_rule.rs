@@ -164,6 +164,9 @@ fn none_label(status: Option<ImpactStatus>) -> &'static str {
 pub const NO_VALUE_WETTED_AT_START: &str =
     "none (wetted at contact: no analytic peak, and no SPH run in this event)";
 
+/// The source of a design value from the analytic estimate alone, where no SPH ran in the event.
+pub const ANALYTIC_WITHOUT_SPH: &str = "analytic";
+
 /// The design value without an SPH run: the analytic peak (source `analytic`), no value where the
 /// analytic values are only the decay of a singular start ([`NO_VALUE_WETTED_AT_START`]), `None`
 /// without an analytic estimate.
@@ -171,7 +174,7 @@ fn without_sph(a: AnalyticPeak) -> Option<Decision> {
     match a {
         AnalyticPeak::Peak(v) => Some(Decision {
             value: Some(v),
-            source: "analytic",
+            source: ANALYTIC_WITHOUT_SPH,
             uncertainty: None,
         }),
         AnalyticPeak::NoPeakAfterStart => Some(Decision {

@@ -267,14 +267,15 @@ pub fn page(r: &mut Report, saved: &Saved) {
                 speed_text(num(d, "speed_m_per_s")),
             ]);
             let (window, analytic_time) = governing_timing(saved, f, d);
-            let width = list(st, "sensors")
-                .iter()
-                .find(|x| text(x, "name") == text(d, "name"))
-                .and_then(|x| num(x, "width_m"))
-                .unwrap_or(0.0);
             // the SPH run's own (its integration span), else the panel's from the hull file
-            let deadrise = num(d, "local_deadrise_deg")
-                .or_else(|| saved.local_deadrise_deg(text(d, "name"), width));
+            let deadrise = num(d, "local_deadrise_deg").or_else(|| {
+                let width = list(st, "sensors")
+                    .iter()
+                    .find(|x| text(x, "name") == text(d, "name"))
+                    .and_then(|x| num(x, "width_m"))
+                    .unwrap_or(0.0);
+                saved.local_deadrise_deg(text(d, "name"), width)
+            });
             detail.push(vec![
                 text(d, "name").to_string(),
                 fmt(deadrise, 1.0, 1),
