@@ -9,6 +9,7 @@ pub mod peak;
 pub mod section_profile;
 pub mod similarity;
 mod similarity_bem;
+pub mod similarity_force;
 mod similarity_mesh;
 pub mod similarity_sensor;
 mod similarity_solver;

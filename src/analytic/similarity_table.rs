@@ -24,8 +24,9 @@
 //!
 //! (checked numerically against the model's own peak search in the tests). It is 18 % above the
 //! similarity Cp_max at 20 deg, 40 % at 30 deg, 71 % at 40 deg and 73-76 % from 45 to 55 deg (where
-//! the similarity maximum is at the keel), while its force is within a few per cent: the MLM's pressure
-//! near the jet root is too high at moderate deadrise.
+//! the similarity maximum is at the keel), while its force is within 2 % up to 20 deg and 7 % at 30 deg
+//! (22 % at 45 deg; [`crate::analytic::similarity_force`]): the MLM's pressure near the jet root is too
+//! high at moderate deadrise.
 //!
 //! **The correction** (a choice, not a published model). The MLM pressure at time t is multiplied by
 //!
@@ -47,9 +48,9 @@
 //! wedge at constant speed the corrected peak is the similarity Cp_max up to the interpolation error of
 //! this table (stated, measured in the tests); the whole distribution is scaled, so a sensor wider than
 //! the jet-root region reads the scaled MLM shape, not the similarity shape (the error this makes is
-//! measured against the similarity sensor reference, `similarity_sensor`); the force is not corrected
-//! (the MLM force is within 1-7 % of the similarity force; the assessment's force is the generalised
-//! Wagner force anyway). Above 55 deg local deadrise the factor of 55 deg is used and the estimate says
+//! measured against the similarity sensor reference, `similarity_sensor`); the section force has its
+//! own correction, for the equivalent wedge of the whole wetted width
+//! ([`crate::analytic::similarity_force`]). Above 55 deg local deadrise the factor of 55 deg is used and the estimate says
 //! so (the MLM over-prediction grows with the deadrise, so this under-corrects); at 0 deg (a flat keel,
 //! whose contact is acoustic) the factor is 1.
 
@@ -81,9 +82,10 @@ pub const MAX_DEG: f64 = 55.0;
 
 /// The deadrise (deg) from which the similarity solution's pressure maximum is at the keel, not at the
 /// spray root (the solver on its default grid: the spray-root maximum 2.823 against 2.809 at the keel at
-/// 42.05 deg, the keel's 2.793 against 2.7935 at 42.2 deg; test `the_maximum_moves_to_the_keel`). From
-/// about 41 to 45 deg the two differ by under 1 %: the pressure along the lower side is nearly flat
-/// (Cp 2.29-2.52 over z/(V t) from -0.9 to 0.3 at 45 deg). A sensor on a side this steep sees no
+/// 42.05 deg; at 42.2 deg the keel's panel reads 2.793 against 2.7935 for the panel maximum, equal
+/// within 0.01 %, and the refined maximum, 2.797, is the keel's; test `the_maximum_moves_to_the_keel`).
+/// From about 41 to 45 deg the two differ by under 1 %: the pressure along the lower side is nearly
+/// flat (Cp 2.29-2.52 over z/(V t) from -0.9 to 0.3 at 45 deg). A sensor on a side this steep sees no
 /// impact pulse pass: at constant speed its pressure 1/2 rho V^2 Cp(z_s / (V t)) grows towards the
 /// keel's value as the wetting deepens and falls only as the entry slows, so the largest value of its
 /// impact window is a level, not the peak of an event ([`crate::loads::anatomy`]).

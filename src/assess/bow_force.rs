@@ -12,9 +12,10 @@
 //! Two totals are given:
 //! * `peak_sum`: f is each station's peak section force, whenever it occurs. The peaks of different
 //!   stations do not occur together, so this is an upper bound of the total force.
-//! * `time_coincident`: the largest over time of ∫ f(x, t) dx, with each station's generalised Wagner force
-//!   history placed at its keel-entry instant within the encounter period and scaled to the station's
-//!   design section force (f(x, t) = F_W(t) f_design / max F_W), so that the shape in time is Wagner's and
+//! * `time_coincident`: the largest over time of ∫ f(x, t) dx, with each station's analytic force
+//!   history (the corrected MLM force, [`crate::analytic::similarity_force`]) placed at its keel-entry
+//!   instant within the encounter period and scaled to the station's design section force (f(x, t) =
+//!   F_A(t) f_design / max F_A), so that the shape in time is the analytic model's and
 //!   the level the design value's. It is the total a hull girder feels at one instant, and never exceeds
 //!   `peak_sum`, whose integrand is the largest of each f(x, t).
 
@@ -27,8 +28,8 @@ pub const DEFINITION: &str = "total bow slamming force F = integral of the secti
 x, f linear between the assessed stations (trapezoid rule), from the aftmost to the foremost assessed \
 station only (no extrapolation), f = 0 where the keel stays in the water; point of action x_F = integral \
 of x f dx / F (m from midship, positive forward). peak_sum: f = each station's peak section force (SPH \
-where run, else generalised Wagner), an upper bound because the peaks are not simultaneous; \
-time_coincident: the largest over time of the integral of the generalised Wagner force histories placed at \
+where run, else the analytic force), an upper bound because the peaks are not simultaneous; \
+time_coincident: the largest over time of the integral of the analytic force histories placed at \
 each station's keel-entry instant, each scaled to its station's design section force (so that it never \
 exceeds peak_sum)";
 
@@ -91,7 +92,7 @@ pub struct BowForce {
 
 /// The verdict of a total over `stations` ([`BowForce::verdict`]): converged where every slamming
 /// station's section force is an SPH force shown converged (converged or acceptable); otherwise which
-/// stations take the analytic (generalised Wagner) force because no SPH ran at them in this event, and
+/// stations take the analytic force because no SPH ran at them in this event, and
 /// which have an SPH force not shown converged, with its verdict.
 fn total_verdict(stations: &[StationForce]) -> String {
     let slamming: Vec<&StationForce> = stations
@@ -127,8 +128,8 @@ fn total_verdict(stations: &[StationForce]) -> String {
     if !analytic.is_empty() {
         let list: Vec<String> = analytic.iter().map(|s| s.station.to_string()).collect();
         parts.push(format!(
-            "at {} {} no SPH ran in this event: the force there is the analytic estimate (generalised \
-             Wagner), which has no convergence to show",
+            "at {} {} no SPH ran in this event: the force there is the analytic estimate (corrected \
+             MLM), which has no convergence to show",
             stations_word(list.len()),
             list.join(", ")
         ));
@@ -168,7 +169,7 @@ pub fn of_events(events: &[&EventResult], entry: &[Option<f64>], period: f64) ->
         .iter()
         .map(|e| {
             let none = if e.entry_velocity_m_per_s.is_some() {
-                "none (no force peak: a flat keel's Wagner force only decays)"
+                "none (no force peak: a flat keel's analytic force only decays)"
             } else {
                 "no-emergence"
             };

@@ -6,7 +6,7 @@
 //! impact or of the record's end. With P that peak, U = GCI P its discretisation uncertainty (Roache's
 //! Grid Convergence Index of the matched peaks at two or three spacings, [`crate::loads::convergence`])
 //! and A the analytic estimate of the same sensor and event (modified Logvinovich mean panel pressure,
-//! or generalised Wagner force):
+//! or section force, each corrected to the similarity solution of the equivalent wedge):
 //!
 //! * SPH shown converged (verdict converged or acceptable, the companion's peak the same event):
 //!   design = P + U, the upper end of the uncertainty band (source `sph (converged)` where

@@ -294,7 +294,7 @@ fn cost_of(jobs: &[Job], study: StudyPlan, threads: usize) -> Cost {
 
 /// What the SPH section force of a flare event holds besides the slam: the hydrostatic buoyancy of the
 /// section immersed at the start (rho g A, A the immersed area at the keel depth, from the hull
-/// section), which the analytic (Wagner) force leaves out; its value at the start and at the SPH force
+/// section), which the analytic force leaves out; its value at the start and at the SPH force
 /// peak (keel depth d0 + integral of V).
 fn buoyancy_note(d0: f64, case: &plan::EntryCase, t_peak: f64, rho: f64) -> String {
     let sec = crate::hull::Section::new(case.half_points.clone());
@@ -317,8 +317,8 @@ fn buoyancy_note(d0: f64, case: &plan::EntryCase, t_peak: f64, rho: f64) -> Stri
     format!(
         "flare event: the SPH section force includes the hydrostatic buoyancy of the immersed section, rho g A \
          = {:.1} N/m at the start (keel {d0:.4} m deep) and {:.1} N/m at the force peak (keel {depth:.4} m \
-         deep, t = {t_peak:.4} s); the slamming part is the difference, and the analytic (Wagner) force has \
-         no buoyancy",
+         deep, t = {t_peak:.4} s); the slamming part is the difference, and the analytic force has no \
+         buoyancy",
         at(d0),
         at(depth)
     )

@@ -12,7 +12,8 @@
 //!   ([`crate::impact::flare`]).
 //!   Irregular seas give Ochi's slam statistics and one design event per slamming station and speed
 //!   ([`design_event`]).
-//! * [`analytic`]: generalised Wagner force and modified Logvinovich sensor pressures for an event.
+//! * [`analytic`]: modified Logvinovich section force and sensor pressures for an event, corrected to the
+//!   similarity solution.
 //! * [`execute`]: the SPH runs (with a convergence companion), in parallel, through the [`cache`].
 //! * [`results`]: per event, per station (design pressure per sensor: the maximum over events) and the
 //!   files (`summary.json`, `pressures.csv`).

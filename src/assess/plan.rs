@@ -21,7 +21,8 @@ use crate::sph::{MotionSpec, Overrides, SensorSpec, StudyPlan};
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
 #[serde(rename_all = "lowercase")]
 pub enum Fidelity {
-    /// Generalised Wagner force and modified Logvinovich (MLM) sensor pressures: seconds.
+    /// Modified Logvinovich (MLM) section force and sensor pressures, corrected to the similarity
+    /// solution: seconds.
     Analytic,
     /// SPH for every event, each with the analytic estimate and a convergence statement beside it.
     Sph,

@@ -298,7 +298,7 @@ pub struct EventResult {
     pub flare_event: Option<super::plan::FlareEvent>,
     /// For an irregular sea's design event (wave `"<sea>/design"`): how it is defined, with N or alpha.
     pub design_event: Option<super::design_event::DesignEvent>,
-    /// Generalised Wagner force and MLM sensor pressures (when the keel emerges).
+    /// The analytic section force and sensor pressures (corrected MLM; when the keel emerges).
     pub analytic: Option<Estimate>,
     /// The SPH run, when one was made and finished.
     pub sph: Option<SphRecord>,
@@ -820,6 +820,7 @@ mod tests {
         let analytic = Estimate {
             force_peak_n_per_m: Some(300.0),
             force_peak_time_s: Some(0.03),
+            wagner_force_peak_n_per_m: None,
             sensors: ["K1", "K2", "K3"]
                 .iter()
                 .map(|n| SensorEstimate {

@@ -65,7 +65,7 @@ pub struct AssessArgs {
     forcing: Vec<String>,
     /// screen: analytic everywhere, then SPH for the governing event of each station (highest analytic
     /// sensor pressure); sph: SPH for every event, with the analytic estimate and a convergence statement
-    /// beside each peak; analytic: generalised Wagner + MLM for every event (seconds).
+    /// beside each peak; analytic: corrected MLM force and pressures for every event (seconds).
     #[arg(long, value_enum, default_value = "screen")]
     fidelity: Fidelity,
     /// Resolution of the SPH runs.

@@ -168,7 +168,10 @@ fn slamming_statement(levels: &[&ReportedPeak], dp: &[f64]) -> PeakConvergence {
     let mut c = assess(name, unit, &dp[..n], &values);
     c.dp_m = dp.to_vec();
     c.values = levels.iter().map(|p| p.value).collect();
-    if let (true, Some(b)) = (n > 1 && fine.without_pulse(), fine.local_deadrise_deg) {
+    if n > 1
+        && fine.without_pulse()
+        && let Some(b) = fine.local_deadrise_deg
+    {
         c.statement.push_str(&format!(
             "; a side of {b:.1} deg local deadrise (at least {:.1}): no impact pulse crosses it, so the \
              levels' largest values in the impact window are compared, not their times",

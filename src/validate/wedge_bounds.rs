@@ -10,9 +10,8 @@ use super::wedge_references::{
 };
 use super::wedges::{mean_ratio, ratio_range, wedge_run};
 use super::{Case, Figure, Mode, Outcome, Reference, Series, Table};
-use crate::analytic::logvinovich_mlm::Mlm;
 use crate::analytic::{von_karman, wagner};
-use crate::error::{Error, Result};
+use crate::error::Result;
 
 /// Wagner's and von Karman's forces bound the section force: F_SPH / F_Wagner averaged over 30-60 % of
 /// the chine-wetting time must lie in [F_vK / F_W, 1] = [4/pi^2, 1]. The modified Logvinovich model's
@@ -120,21 +119,9 @@ pub fn force_bounds(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcome> {
     })
 }
 
-/// F / (rho V^3 t) of a wedge of deadrise `beta` at constant speed by the modified Logvinovich model
-/// ([`Mlm`], Korobkin 2004): constant for the self-similar wedge flow, so it is taken at one instant
-/// (1 ms at 1 m/s on a side long enough never to be wetted to its end).
-pub fn mlm_force_coefficient(beta: f64) -> Result<f64> {
-    let t: Vec<f64> = (0..=20).map(|k| k as f64 * 5e-5).collect();
-    let half = [[0.0, 0.0], [1.0, beta.tan()]];
-    let m = Mlm::new(&half, &t, &vec![1.0; t.len()], WATER_DENSITY)?;
-    let s = m
-        .history()
-        .states
-        .last()
-        .copied()
-        .ok_or_else(|| Error::Invalid("modified Logvinovich model: no entry state".into()))?;
-    Ok(m.force(&s) / (WATER_DENSITY * s.t))
-}
+/// F / (rho V^3 t) of a wedge of deadrise `beta` (rad) at constant speed by the modified Logvinovich
+/// model, the analytic module's ([`crate::analytic::similarity_force::mlm_wedge_force_coefficient`]).
+pub use crate::analytic::similarity_force::mlm_wedge_force_coefficient as mlm_force_coefficient;
 
 /// Wagner's peak pressure bounds the sensor peaks: the largest filtered sensor Cp over Wagner's point
 /// Cp_max = (pi^2/4) cot^2(beta).
@@ -279,7 +266,7 @@ mod tests {
             let cot2 = 1.0 / beta.tan().powi(2);
             assert!(PI * cot2 < k && k < PI.powi(3) / 4.0 * cot2, "{deg}: {k}");
             let t: Vec<f64> = (0..=40).map(|j| j as f64 * 1e-4).collect();
-            let m = Mlm::new(
+            let m = crate::analytic::logvinovich_mlm::Mlm::new(
                 &[[0.0, 0.0], [0.5, 0.5 * beta.tan()]],
                 &t,
                 &vec![3.0; t.len()],
