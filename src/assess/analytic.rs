@@ -85,11 +85,19 @@ pub fn force_correction_note() -> String {
     )
 }
 
+/// What the estimate of an immersed start (a flare event) says of its section force.
+pub const IMMERSED_FORCE_NOTE: &str = "analytic section force of an immersed start: the modified \
+Logvinovich model's force without the wedge-equivalent correction (a section that starts immersed has no \
+equivalent wedge: the similarity flow starts at the apex); for wedges entering from the apex the uncorrected \
+MLM force is 2 % below the similarity force at 5-10 deg and 1-32 % above it from 20 to 55 deg, and on an \
+immersed start its error is not measured against an exact solution";
+
 /// The analytic estimate of one event.
 #[derive(Debug, Clone, Serialize, Deserialize, PartialEq)]
 pub struct Estimate {
     /// Analytic section force (N/m): peak and time of the MLM force with the wedge-equivalent correction
-    /// ([`crate::analytic::similarity_force`]); `None` where it has no peak (a flat keel or an immersed
+    /// ([`crate::analytic::similarity_force`]; without it for an immersed start, [`IMMERSED_FORCE_NOTE`]);
+    /// `None` where it has no peak (a flat keel or an immersed
     /// start whose force only decays after its singular start: the rule of [`crate::analytic::peak`]).
     pub force_peak_n_per_m: Option<f64>,
     pub force_peak_time_s: Option<f64>,
@@ -366,13 +374,20 @@ pub fn estimate_in(case: &EntryCase, rho: f64) -> Result<Estimate> {
             }
         })
         .collect();
-    // The section force: the MLM force corrected to the similarity force of the equivalent wedge, its
-    // peak by the same rule as the panels' (no contact-passing limit: the force has no panel).
-    let (force_series, force_k) = mlm.corrected_force_history();
+    // The section force: the MLM force corrected to the similarity force of the equivalent wedge (a
+    // keel entry), its peak by the same rule as the panels' (no contact-passing limit: the force has no
+    // panel). A section that starts immersed has no equivalent wedge (the similarity flow starts at the
+    // apex): its force is the MLM's without the correction.
+    let (force_series, force_k) = if d0 > 0.0 {
+        notes.push(IMMERSED_FORCE_NOTE.into());
+        (mlm.force_history(), Vec::new())
+    } else {
+        notes.push(force_correction_note());
+        mlm.corrected_force_history()
+    };
     let (fp, no_force_peak) =
         peak_outside(&times, &force_series, &acoustic, w.singular_start, None);
     let force = (!no_force_peak && fp.value > 0.0).then_some((fp.value, fp.time));
-    notes.push(force_correction_note());
     if let (None, Some((fw, tw))) = (force, w.force_peak()) {
         notes.push(format!(
             "analytic section force: no peak (the corrected MLM force only decays after the singular \
