@@ -63,8 +63,9 @@ pub fn correction_note() -> String {
          correction (each instant scaled by the similarity solution's wedge peak over the model's own, \
          at the local deadrise of the contact point; analytic::similarity_table). For a wedge at \
          constant speed its peak is within {:.1} % of the nonlinear similarity solution from 5 to 55 deg \
-         (uncorrected: 5 % high at 10 deg, 18 % at 20, 40 % at 30, 71 % at 40, 75 % at 55 deg). On other sections and at varying speed it assumes local-wedge equivalence at the \
-         contact point and constant speed, and its error there is not measured against an exact solution",
+         (uncorrected: 5 % high at 10 deg, 18 % at 20, 40 % at 30, 71 % at 40, 75 % at 55 deg). On other \
+         sections and at varying speed it assumes local-wedge equivalence at the contact point and \
+         constant speed, and its error there is not measured against an exact solution",
         100.0 * crate::analytic::similarity_table::STATED_ERROR
     )
 }
@@ -97,8 +98,8 @@ immersed start its error is not measured against an exact solution";
 pub struct Estimate {
     /// Analytic section force (N/m): peak and time of the MLM force with the wedge-equivalent correction
     /// ([`crate::analytic::similarity_force`]; without it for an immersed start, [`IMMERSED_FORCE_NOTE`]);
-    /// `None` where it has no peak (a flat keel or an immersed
-    /// start whose force only decays after its singular start: the rule of [`crate::analytic::peak`]).
+    /// `None` where it has no peak (a flat keel or an immersed start whose force only decays after its
+    /// singular start: the rule of [`crate::analytic::peak`]).
     pub force_peak_n_per_m: Option<f64>,
     pub force_peak_time_s: Option<f64>,
     /// The flat-plate (generalised) Wagner force's peak (N/m), for comparison: it over-predicts a
@@ -390,8 +391,8 @@ pub fn estimate_in(case: &EntryCase, rho: f64) -> Result<Estimate> {
     let force = (!no_force_peak && fp.value > 0.0).then_some((fp.value, fp.time));
     if let (None, Some((fw, tw))) = (force, w.force_peak()) {
         notes.push(format!(
-            "analytic section force: no peak (the corrected MLM force only decays after the singular \
-             start); the flat-plate Wagner force rises again to {fw:.1} N/m at {:.2} ms, which the MLM's \
+            "analytic section force: no peak (the MLM force only decays after the singular start); the \
+             flat-plate Wagner force rises again to {fw:.1} N/m at {:.2} ms, which the MLM's \
              force does not",
             tw * 1e3
         ));
