@@ -230,7 +230,8 @@ pub fn page(r: &mut Report, saved: &Saved) {
          by value, whatever their times. A panel with no design value (\"-\") is one no model here computes. \
          Analytic: the modified Logvinovich model (MLM) for pressures and forces, each corrected to the \
          nonlinear similarity solution of the equivalent wedge (the flat-plate Wagner force is 38 % above \
-         that solution at 20 deg and 126 % at 45 deg, and is not used). \
+         that solution at 20 deg and 126 % at 45 deg); after a flat keel's start, which has no equivalent \
+         wedge, the force is the flat-plate Wagner force, kept as a conservative estimate. \
          SPH pressures are totals, hydrostatic part included; the analytic (MLM) pressures are \
          hydrodynamic only. The hydrostatic column is the part at the time of the SPH peak, given apart as \
          class rules treat them apart (it is not in an analytic design value). Density {} kg/m3.",
