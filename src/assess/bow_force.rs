@@ -128,8 +128,9 @@ fn total_verdict(stations: &[StationForce]) -> String {
     if !analytic.is_empty() {
         let list: Vec<String> = analytic.iter().map(|s| s.station.to_string()).collect();
         parts.push(format!(
-            "at {} {} no SPH ran in this event: the force there is the analytic estimate (corrected \
-             MLM), which has no convergence to show",
+            "at {} {} no SPH ran in this event: the force there is the analytic estimate (the \
+             corrected MLM force, or the flat-plate Wagner force after a flat keel's or an immersed start), \
+             which has no convergence to show",
             stations_word(list.len()),
             list.join(", ")
         ));

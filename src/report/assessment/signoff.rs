@@ -372,8 +372,8 @@ pub fn page(r: &mut Report, saved: &Saved) {
         })
         .collect();
     r.push(Block::Table {
-        caption: "Section force per metre (N/m): design value, SPH slamming peak ± U, analytic (corrected MLM), \
-                  buoyancy at the SPH peak (the hydrostatic part), source and verdict"
+        caption: "Section force per metre (N/m): design value, SPH slamming peak ± U, analytic (corrected MLM; \
+                  flat-plate Wagner after a flat keel's start), buoyancy at the SPH peak (the hydrostatic part), source and verdict"
             .into(),
         header: [
             "station",
