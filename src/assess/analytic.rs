@@ -378,60 +378,83 @@ pub fn estimate_in(case: &EntryCase, rho: f64) -> Result<Estimate> {
             }
         })
         .collect();
-    // The section force: the MLM force corrected to the similarity force of the equivalent wedge, its
-    // peak by the same rule as the panels' (no contact-passing limit: the force has no panel). After a
-    // singular start (a flat keel, or a section that starts immersed) there is no equivalent wedge and
-    // the MLM force has no distinct peak of its own: the flat-plate Wagner force stays the estimate
-    // ([`SINGULAR_START_FORCE_NOTE`]).
-    let (force, force_series, force_times, force_k) = if w.singular_start {
-        notes.push(SINGULAR_START_FORCE_NOTE.into());
-        let kept: Vec<usize> = (0..w.t.len().min(w.force.len()))
-            .filter(|&k| !w.acoustic_limited.get(k).copied().unwrap_or(false))
-            .collect();
-        (
-            w.force_peak(),
-            kept.iter().map(|&k| w.force[k]).collect::<Vec<f64>>(),
-            kept.iter().map(|&k| w.t[k]).collect::<Vec<f64>>(),
-            Vec::new(),
-        )
-    } else {
-        notes.push(force_correction_note());
-        let (series, k) = mlm.corrected_force_history();
-        let (fp, no_peak) = peak_outside(&times, &series, &acoustic, false, None);
-        let force = (!no_peak && fp.value > 0.0).then_some((fp.value, fp.time));
-        let kept: Vec<usize> = (0..times.len().min(series.len()))
-            .filter(|&k| !acoustic[k])
-            .collect();
-        (
-            force,
-            kept.iter().map(|&k| series[k]).collect(),
-            kept.iter().map(|&k| times[k]).collect(),
-            k,
-        )
-    };
-    if force_k.iter().any(|c| c.above_table) {
-        notes.push(format!(
-            "analytic section force: at {} of {} samples the equivalent wedge's deadrise is above {} deg; \
-             the correction of {} deg is used there (this under-corrects: the force stays on the high side)",
-            force_k.iter().filter(|c| c.above_table).count(),
-            force_k.len(),
-            crate::analytic::similarity_table::MAX_DEG,
-            crate::analytic::similarity_table::MAX_DEG
-        ));
-    }
-    let force_history = force_times
-        .iter()
-        .zip(&force_series)
-        .map(|(t, f)| [*t, *f])
-        .collect();
+    let f = section_force(&w, &mlm);
+    notes.extend(f.notes);
+    let force = f.peak;
     Ok(Estimate {
         force_peak_n_per_m: force.map(|f| f.0),
         force_peak_time_s: force.map(|f| f.1),
         wagner_force_peak_n_per_m: w.force_peak().map(|f| f.0),
         sensors,
         notes,
-        force_history,
+        force_history: f.history,
     })
+}
+
+/// The analytic section force of an entry: its peak (N/m, s), the history it was taken from and what the
+/// estimate says of it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SectionForce {
+    /// Peak and its time; `None` where the force has no peak (the rule of [`crate::analytic::peak`]).
+    pub peak: Option<(f64, f64)>,
+    /// [t (s), F (N/m)] without the samples at the acoustic limit.
+    pub history: Vec<[f64; 2]>,
+    /// The model: [`MLM_FORCE_MODEL`] or [`WAGNER_FORCE_MODEL`].
+    pub model: &'static str,
+    /// Which model, and its stated error.
+    pub notes: Vec<String>,
+}
+
+/// The corrected MLM force's name in outputs.
+pub const MLM_FORCE_MODEL: &str =
+    "modified Logvinovich, corrected to the similarity force of the equivalent wedge";
+/// The flat-plate Wagner force's name in outputs (after a singular start).
+pub const WAGNER_FORCE_MODEL: &str = "flat-plate Wagner (after a flat keel's or an immersed start)";
+
+/// The analytic section force from the Wagner estimate `w` and the MLM `mlm` of the same entry: the MLM
+/// force corrected to the similarity force of the equivalent wedge, its peak by the rule of the panels
+/// (no contact-passing limit: the force has no panel); after a singular start (a flat keel, or a section
+/// that starts immersed) there is no equivalent wedge and the MLM force has no distinct peak of its own,
+/// so the flat-plate Wagner force stays the estimate ([`SINGULAR_START_FORCE_NOTE`]).
+pub fn section_force(w: &generalised_wagner::WagnerEstimate, mlm: &Mlm) -> SectionForce {
+    let mut notes = Vec::new();
+    if w.singular_start {
+        notes.push(SINGULAR_START_FORCE_NOTE.into());
+        let history = (0..w.t.len().min(w.force.len()))
+            .filter(|&k| !w.acoustic_limited.get(k).copied().unwrap_or(false))
+            .map(|k| [w.t[k], w.force[k]])
+            .collect();
+        return SectionForce {
+            peak: w.force_peak(),
+            history,
+            model: WAGNER_FORCE_MODEL,
+            notes,
+        };
+    }
+    notes.push(force_correction_note());
+    let times = mlm.times();
+    let acoustic = mlm.acoustic();
+    let (series, k) = mlm.corrected_force_history();
+    let (fp, no_peak) = peak_outside(&times, &series, &acoustic, false, None);
+    if k.iter().any(|c| c.above_table) {
+        notes.push(format!(
+            "analytic section force: at {} of {} samples the equivalent wedge's deadrise is above {} deg; \
+             the correction of {} deg is used there (this under-corrects: the force stays on the high side)",
+            k.iter().filter(|c| c.above_table).count(),
+            k.len(),
+            crate::analytic::similarity_table::MAX_DEG,
+            crate::analytic::similarity_table::MAX_DEG
+        ));
+    }
+    SectionForce {
+        peak: (!no_peak && fp.value > 0.0).then_some((fp.value, fp.time)),
+        history: (0..times.len().min(series.len()))
+            .filter(|&j| !acoustic.get(j).copied().unwrap_or(false))
+            .map(|j| [times[j], series[j]])
+            .collect(),
+        model: MLM_FORCE_MODEL,
+        notes,
+    }
 }
 
 #[cfg(test)]
@@ -535,5 +558,38 @@ mod densify_tests {
         }
         // nothing is added over the second interval
         assert_eq!(ts[ts.len() - 2], 1.0);
+    }
+}
+
+#[cfg(test)]
+mod section_force_tests {
+    use super::*;
+
+    /// A wedge at constant speed gets the similarity force (within the stated 0.5 %) by the corrected MLM;
+    /// a flat keel keeps the flat-plate Wagner force.
+    #[test]
+    fn a_wedge_gets_the_similarity_force_and_a_flat_keel_wagner_s() {
+        let b = 30f64.to_radians();
+        let t: Vec<f64> = (0..=200).map(|k| k as f64 * 1e-4).collect();
+        let v = vec![5.0; t.len()];
+        let wedge = [[0.0, 0.0], [0.25, 0.25 * b.tan()], [0.25, 0.5]];
+        let w = generalised_wagner::estimate(&wedge, &t, &v, 1000.0).unwrap();
+        let m = Mlm::new(&wedge, &t, &v, 1000.0).unwrap();
+        let f = section_force(&w, &m);
+        assert_eq!(f.model, MLM_FORCE_MODEL);
+        let (peak, at) = f.peak.unwrap();
+        let exact = crate::analytic::similarity_force::FORCE[5] * 1000.0 * 125.0 * at;
+        assert!((peak / exact - 1.0).abs() < 0.005, "{peak} against {exact}");
+        // the flat-plate force of the same wedge is 66 % above it
+        let (wagner, _) = w.force_peak().unwrap();
+        assert!(wagner > 1.6 * peak);
+        let flat = [[0.0, 0.0], [0.1, 0.0], [0.25, 0.15], [0.25, 0.5]];
+        let w = generalised_wagner::estimate(&flat, &t, &v, 1000.0).unwrap();
+        let m = Mlm::new(&flat, &t, &v, 1000.0).unwrap();
+        let f = section_force(&w, &m);
+        assert!(w.singular_start);
+        assert_eq!(f.model, WAGNER_FORCE_MODEL);
+        assert_eq!(f.peak, w.force_peak());
+        assert!(f.notes.iter().any(|n| n.contains("flat-plate Wagner")));
     }
 }

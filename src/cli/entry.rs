@@ -459,13 +459,14 @@ fn go(mut setup: sph::Setup, run: Run, name: &str) -> slamtool::Result<()> {
         png: c.frames > 0,
         provenance: Some(run.prov.clone()),
     };
-    let RunResult { summary, .. } = if c.keel_stages {
+    let RunResult { summary, history } = if c.keel_stages {
         sph::run_staged(setup, &opts, plan)?
     } else {
         sph::run_with_convergence(setup, &opts, plan)?
     };
     let mut warnings = run.warnings;
     warnings.extend(summary.warnings.iter().cloned());
+    let analytic = analytic_force(&summary, &history);
     if c.json.json {
         for w in &warnings {
             global::warn_stderr(w);
@@ -476,6 +477,12 @@ fn go(mut setup: sph::Setup, run: Run, name: &str) -> slamtool::Result<()> {
             "warnings": warnings,
             "outputs": { "folder": out.display().to_string() },
             "summary": summary,
+            "analytic_force": analytic.as_ref().map(|a| serde_json::json!({
+                "model": a.model,
+                "peak_n_per_m": a.peak.map(|p| p.0),
+                "peak_time_s": a.peak.map(|p| p.1),
+                "notes": a.notes,
+            })),
         });
         global::print_json(json);
         return Ok(());
@@ -558,6 +565,16 @@ fn go(mut setup: sph::Setup, run: Run, name: &str) -> slamtool::Result<()> {
             wp * 1e-3
         );
     }
+    if let Some(a) = &analytic {
+        match a.peak {
+            Some((f, t)) => println!(
+                "analytic force  {f:.1} N/m at {:.3} ms ({}, same v(t))",
+                t * 1e3,
+                a.model
+            ),
+            None => println!("analytic force  no peak ({}, same v(t))", a.model),
+        }
+    }
     if let Some(conv) = &summary.convergence {
         println!(
             "convergence     (Roache GCI; companions in {}/convergence)",
@@ -595,6 +612,22 @@ fn go(mut setup: sph::Setup, run: Run, name: &str) -> slamtool::Result<()> {
 }
 
 /// The contact transient's line of an entry report.
+/// The analytic section force of the run's section along its own downward velocity (the assessment's
+/// estimate, [`slamtool::assess::analytic::section_force`]), or `None` for a tank without a body or where
+/// the models do not take the section.
+fn analytic_force(
+    summary: &sph::RunSummary,
+    h: &sph::sensors::History,
+) -> Option<slamtool::assess::analytic::SectionForce> {
+    let points = summary.setup.section_points.as_ref()?;
+    let section = sph::body::Section::from_half_points(points.clone()).ok()?;
+    let half = section.half_points();
+    let rho = summary.setup.rho0;
+    let w = slamtool::analytic::generalised_wagner::estimate(half, &h.t, &h.v_down, rho).ok()?;
+    let m = slamtool::analytic::logvinovich_mlm::Mlm::new(half, &h.t, &h.v_down, rho).ok()?;
+    Some(slamtool::assess::analytic::section_force(&w, &m))
+}
+
 fn print_contact_transient(summary: &sph::RunSummary) {
     println!(
         "contact transient (keel less than {} dp deep, up to {:.3} ms; acoustic, not a slamming load): \
