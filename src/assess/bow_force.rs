@@ -13,10 +13,10 @@
 //! * `peak_sum`: f is each station's peak section force, whenever it occurs. The peaks of different
 //!   stations do not occur together, so this is an upper bound of the total force.
 //! * `time_coincident`: the largest over time of ∫ f(x, t) dx, with each station's analytic force
-//!   history (the corrected MLM force, [`crate::analytic::similarity_force`]) placed at its keel-entry
-//!   instant within the encounter period and scaled to the station's design section force (f(x, t) =
-//!   F_A(t) f_design / max F_A), so that the shape in time is the analytic model's and
-//!   the level the design value's. It is the total a hull girder feels at one instant, and never exceeds
+//!   history ([`crate::assess::analytic::section_force`]: the corrected MLM force, or the flat-plate
+//!   Wagner force after a flat keel's or an immersed start) placed at its keel-entry instant within the
+//!   encounter period and scaled to the station's design section force (f(x, t) = F_A(t) f_design /
+//!   max F_A), so that the shape in time is the analytic model's and the level the design value's. It is the total a hull girder feels at one instant, and never exceeds
 //!   `peak_sum`, whose integrand is the largest of each f(x, t).
 
 use serde::Serialize;
