@@ -176,3 +176,42 @@ fn flat_vertical_and_full_scale_sections_pass_without_panic() {
         );
     }
 }
+
+/// A deep run of a V keel on the symmetry plane: the 41 deg V with flare of a 70 m test hull (0.1 Lpp of
+/// a hard-chine patrol-vessel form made for testing, not a published hull), at 8.69 m/s for 0.58 s, about
+/// 80 particle spacings of keel depth at the spacing the assessment chose for it (60.1 mm). With the
+/// irregular band of body dummies at the keel used until 2026-11-29 the water next to the keel lost its
+/// pressure, 196 particles were pushed back out of the body and the run blew up at 0.55 s
+/// (docs/numerics/wedge-convergence.md, item 23). About 20 s on 2 cores:
+/// `cargo test --release --test sph_hull_sections -- --ignored deep_v_keel`.
+#[test]
+#[ignore = "regression run, about 20 s"]
+fn a_deep_v_keel_run_keeps_its_water_out_of_the_body() {
+    let section = Section::from_half_points(vec![
+        [0.0, 0.0],
+        [2.044159, 1.781545],
+        [2.260599, 3.868927],
+        [2.404893, 7.0],
+    ])
+    .unwrap();
+    let setup = sph::case::resolve(
+        "patrol 0.1 Lpp",
+        &section,
+        &MotionSpec::Constant { speed_m_s: 8.693 },
+        Vec::new(),
+        &Overrides {
+            dp: Some(0.060125),
+            t_end: Some(0.581),
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    let r = sph::run(setup, &RunOptions::default()).unwrap();
+    let s = &r.summary;
+    assert!(s.stopped_early.is_none(), "{:?}", s.stopped_early);
+    assert!(
+        s.counters.contact_corrections <= 20,
+        "{} water particles put back out of the body",
+        s.counters.contact_corrections
+    );
+}
