@@ -192,8 +192,9 @@ pub fn distance_to_polyline(c: &[[f64; 2]], y: f64, z: f64) -> f64 {
 /// With a symmetry plane the band must be the half of a mirror-symmetric band, continuous across the
 /// plane. So on each segment that touches or crosses the plane (the keel segment, the line across the
 /// top) the points of a layer are placed from the plane outwards: the first where the layer is half a
-/// spacing off the plane, then one every dp along the segment. With its mirror image the first point
-/// then spaces the layer dp apart across the plane, at the layer's own depth. The lattice of the
+/// spacing off the plane, the others about dp apart along the segment, to half a gap before its end.
+/// With its mirror image the first point spaces the layer dp apart across the plane, at the layer's own
+/// depth. The lattice of the
 /// corners is aligned with the plane in the same way (y = dp/2, 3 dp/2, ...), and no point is placed
 /// closer than the minimum gap to a mirror image.
 ///
