@@ -94,7 +94,7 @@ force. The similarity solution is that of a wedge entering from its apex, which 
 equivalent of, and the MLM force falls from the start with no distinct peak of its own (on a 150 m hull's \
 flat-bottomed section at 10.3 m/s its first later rise came at 0.58 s, 175 kN/m, after 1 MN/m at 50 ms). \
 The flat-plate force over-predicts the load of the sides beyond a flat (Ochi's 0.174 Lpp section at 2.4 \
-m/s: 1847 N/m against 861 N/m of SPH hydrodynamic force), so it is kept as the conservative estimate";
+m/s: 1847 N/m against 1129 N/m of SPH hydrodynamic force), so it is kept as the conservative estimate";
 
 /// The analytic estimate of one event.
 #[derive(Debug, Clone, Serialize, Deserialize, PartialEq)]

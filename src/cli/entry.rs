@@ -611,7 +611,6 @@ fn go(mut setup: sph::Setup, run: Run, name: &str) -> slamtool::Result<()> {
     Ok(())
 }
 
-/// The contact transient's line of an entry report.
 /// The analytic section force of the run's section along its own downward velocity (the assessment's
 /// estimate, [`slamtool::assess::analytic::section_force`]), or `None` for a tank without a body or where
 /// the models do not take the section.
@@ -628,6 +627,7 @@ fn analytic_force(
     Some(slamtool::assess::analytic::section_force(&w, &m))
 }
 
+/// The contact transient's line of an entry report.
 fn print_contact_transient(summary: &sph::RunSummary) {
     println!(
         "contact transient (keel less than {} dp deep, up to {:.3} ms; acoustic, not a slamming load): \
