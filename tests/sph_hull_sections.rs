@@ -215,3 +215,98 @@ fn a_deep_v_keel_run_keeps_its_water_out_of_the_body() {
         s.counters.contact_corrections
     );
 }
+
+/// Station 0.08 Lpp of a 150 m bulbous-bow feeder made for testing (`docs/numerics/wedge-convergence.md`,
+/// item 24; not a published hull): a 52 deg V given as 60 offset points, 0.25-0.30 m apart, driven at
+/// 9.2 m/s to 1.1 s, about 45 particle spacings of keel depth at the spacing the assessment chose for
+/// it (226.6 mm, 1.32 spacings a segment). With the band that gave each segment its own points (one
+/// point each here, the wall 24 % sparse) the water next to the wall lost its pressure, 288 particles
+/// were pushed back out of the body and the run blew up at 1.05 s. About 15 s on 2 cores:
+/// `cargo test --release --test sph_hull_sections -- --ignored short_offset`.
+#[test]
+#[ignore = "regression run, about 15 s"]
+fn a_section_of_short_offset_segments_keeps_its_water_out_of_the_body() {
+    let section = Section::from_half_points(vec![
+        [0.0, 0.0],
+        [0.3806, 0.2373],
+        [0.5612, 0.4746],
+        [0.7418, 0.7119],
+        [0.9224, 0.9492],
+        [1.1, 1.1864],
+        [1.2853, 1.4237],
+        [1.4754, 1.661],
+        [1.6682, 1.8983],
+        [1.8628, 2.1356],
+        [2.0583, 2.3729],
+        [2.2541, 2.6102],
+        [2.4499, 2.8475],
+        [2.6453, 3.0847],
+        [2.8401, 3.322],
+        [3.0338, 3.5593],
+        [3.2264, 3.7966],
+        [3.4177, 4.0339],
+        [3.6075, 4.2712],
+        [3.7955, 4.5085],
+        [3.9818, 4.7458],
+        [4.1662, 4.9831],
+        [4.3485, 5.2203],
+        [4.5286, 5.4576],
+        [4.7065, 5.6949],
+        [4.8821, 5.9322],
+        [4.9776, 6.1695],
+        [5.0451, 6.4068],
+        [5.1167, 6.6441],
+        [5.1922, 6.8814],
+        [5.2716, 7.1186],
+        [5.3549, 7.3559],
+        [5.4419, 7.5932],
+        [5.5327, 7.8305],
+        [5.6271, 8.0678],
+        [5.7251, 8.3051],
+        [5.8267, 8.5424],
+        [5.9319, 8.7797],
+        [6.0405, 9.0169],
+        [6.1525, 9.2542],
+        [6.268, 9.4915],
+        [6.3868, 9.7288],
+        [6.5089, 9.9661],
+        [6.6343, 10.2034],
+        [6.763, 10.4407],
+        [6.8949, 10.678],
+        [7.03, 10.9153],
+        [7.1683, 11.1525],
+        [7.3096, 11.3898],
+        [7.4541, 11.6271],
+        [7.6017, 11.8644],
+        [7.7523, 12.1017],
+        [7.9059, 12.339],
+        [8.0625, 12.5763],
+        [8.2221, 12.8136],
+        [8.3846, 13.0508],
+        [8.5501, 13.2881],
+        [8.7185, 13.5254],
+        [8.8897, 13.7627],
+        [9.0638, 14.0],
+    ])
+    .unwrap();
+    let setup = sph::case::resolve(
+        "feeder 0.08 Lpp",
+        &section,
+        &MotionSpec::Constant { speed_m_s: 9.2 },
+        Vec::new(),
+        &Overrides {
+            dp: Some(0.226595),
+            t_end: Some(1.1),
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    let r = sph::run(setup, &RunOptions::default()).unwrap();
+    let s = &r.summary;
+    assert!(s.stopped_early.is_none(), "{:?}", s.stopped_early);
+    assert!(
+        s.counters.contact_corrections <= 20,
+        "{} water particles put back out of the body",
+        s.counters.contact_corrections
+    );
+}

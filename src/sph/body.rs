@@ -1,4 +1,5 @@
-//! The rigid body: a 2D section polyline, its dummy-particle band, its contour samples, and its motion.
+//! The rigid body: a 2D section polyline, its contour samples, and its motion (its band of dummy
+//! particles: [`crate::sph::dummy_band`]).
 //!
 //! The section is given as its starboard half, (y, z) points from the keel (y = 0) up to the deck edge, in
 //! a body frame with the keel at z = 0 (so the keel touches the calm water surface at t = 0). The full
@@ -184,117 +185,6 @@ pub fn distance_to_polyline(c: &[[f64; 2]], y: f64, z: f64) -> f64 {
     nearest_on_polyline(c, y, z).map_or(f64::INFINITY, |b| b.2.sqrt())
 }
 
-/// Body-frame positions of the dummy particles: `layers` layers at depths (k + 1/2) dp under the closed
-/// contour, spaced dp along it, with corners filled from a dp lattice. Only points with y >= y_min are
-/// returned; a positive `y_min` (dp/4) means a half domain with a symmetry plane at y = 0, whose mirror
-/// images complete the band.
-///
-/// With a symmetry plane the band must be the half of a mirror-symmetric band, continuous across the
-/// plane. So on each segment that touches or crosses the plane (the keel segment, the line across the
-/// top) the points of a layer are placed from the plane outwards: the first where the layer is half a
-/// spacing off the plane, the others about dp apart along the segment, to half a gap before its end.
-/// With its mirror image the first point spaces the layer dp apart across the plane, at the layer's own
-/// depth. The lattice of the
-/// corners is aligned with the plane in the same way (y = dp/2, 3 dp/2, ...), and no point is placed
-/// closer than the minimum gap to a mirror image.
-///
-/// (Until 2026-11-29 a column of points at y = dp/2 and heights (k + 1/2) dp was placed first instead.
-/// At a V keel its lowest point sat almost on the wall and pushed the layers' first points aside: the
-/// band next to the keel was irregular. On a 41 deg V section driven 80 spacings deep, water next to
-/// the bottom near the keel then lost pressure step by step, was pushed into the wall (196 contact
-/// corrections) and the run blew up; with the same band on both sides of the keel, without the
-/// symmetry plane, it did not.)
-pub fn dummy_points(section: &Section, dp: f64, layers: usize, y_min: f64) -> Vec<[f64; 2]> {
-    let c = section.closed_contour();
-    let mirror = y_min > 0.0;
-    let depth = layers as f64 * dp;
-    let mut pts: Vec<[f64; 2]> = Vec::new();
-    let mut hash = SpatialHash::new(dp);
-    let try_add = |p: [f64; 2], min_gap: f64, pts: &mut Vec<[f64; 2]>, hash: &mut SpatialHash| {
-        if p[0] < y_min || !section.contains(p[0], p[1]) {
-            return;
-        }
-        if hash.any_within(pts, p, min_gap)
-            || (mirror && (2.0 * p[0] < min_gap || hash.any_within(pts, [-p[0], p[1]], min_gap)))
-        {
-            return;
-        }
-        hash.insert(pts.len(), p);
-        pts.push(p);
-    };
-    for k in 0..layers {
-        let d = (k as f64 + 0.5) * dp;
-        for w in c.windows(2) {
-            let (ty, tz) = (w[1][0] - w[0][0], w[1][1] - w[0][1]);
-            let l = ty.hypot(tz);
-            if l == 0.0 {
-                continue;
-            }
-            let (ny, nz) = (-tz / l, ty / l); // inward normal (body to the left of the direction of travel)
-            for s in layer_positions(w[0][0], w[1][0], ty / l, l, d * ny, dp, mirror) {
-                let p = [w[0][0] + s * ty / l + d * ny, w[0][1] + s * tz / l + d * nz];
-                if (distance_to_polyline(&c, p[0], p[1]) - d).abs() < 0.3 * dp {
-                    try_add(p, 0.6 * dp, &mut pts, &mut hash);
-                }
-            }
-        }
-    }
-    // Fill the corners (body-concave parts) from a lattice.
-    let (mut y0, mut y1, mut z0, mut z1) = (f64::INFINITY, f64::NEG_INFINITY, 0.0, 0.0);
-    for p in &c {
-        y0 = f64::min(y0, p[0]);
-        y1 = f64::max(y1, p[0]);
-        z0 = f64::min(z0, p[1]);
-        z1 = f64::max(z1, p[1]);
-    }
-    if mirror {
-        // The lattice of a half domain starts half a spacing off the plane, like its mirror image.
-        y0 = 0.0;
-    }
-    let ny = ((y1 - y0) / dp).ceil() as i64 + 1;
-    let nz = ((z1 - z0) / dp).ceil() as i64 + 1;
-    for jz in 0..nz {
-        for jy in 0..ny {
-            let p = [y0 + (jy as f64 + 0.5) * dp, z0 + (jz as f64 + 0.5) * dp];
-            let d = distance_to_polyline(&c, p[0], p[1]);
-            if d <= depth {
-                try_add(p, 0.75 * dp, &mut pts, &mut hash);
-            }
-        }
-    }
-    pts
-}
-
-/// Arc-length positions along a contour segment (from y = `ya` to y = `yb`, unit tangent y-component
-/// `uy`, length `l`) of the points of a dummy layer offset by `off_y` in y: evenly spaced about dp apart,
-/// half a gap in from each end. With a symmetry plane (`mirror`), on a segment that touches or crosses
-/// y = 0, the first point is where the layer is dp/2 off the plane, and the others follow it towards
-/// the end of the segment on the plane's positive side, evenly spaced about dp apart to half a gap
-/// before that end.
-fn layer_positions(
-    ya: f64,
-    yb: f64,
-    uy: f64,
-    l: f64,
-    off_y: f64,
-    dp: f64,
-    mirror: bool,
-) -> Vec<f64> {
-    if mirror && ya * yb <= 0.0 && uy.abs() > 1e-9 {
-        let s0 = (0.5 * dp - ya - off_y) / uy;
-        // Length from the first point to the end of the segment on the positive side.
-        let (span, dir) = if uy > 0.0 { (l - s0, 1.0) } else { (s0, -1.0) };
-        if !(0.0..=l).contains(&s0) {
-            return Vec::new();
-        }
-        let m = ((span / dp + 0.5).round() as usize).max(1);
-        let gap = if m > 1 { span / (m as f64 - 0.5) } else { 0.0 };
-        return (0..m).map(|j| s0 + dir * j as f64 * gap).collect();
-    }
-    let m = ((l / dp).round() as usize).max(1);
-    (0..m).map(|i| (i as f64 + 0.5) / m as f64 * l).collect()
-}
-
 /// A point on the body contour used for sensors and the section force.
 #[derive(Debug, Clone, Copy)]
 pub struct ContourPoint {
@@ -380,44 +270,6 @@ pub fn point_at_arc(section: &Section, s: f64) -> Option<[f64; 2]> {
         acc += l;
     }
     None
-}
-
-struct SpatialHash {
-    inv: f64,
-    map: std::collections::HashMap<(i64, i64), Vec<usize>>,
-}
-
-impl SpatialHash {
-    fn new(cell: f64) -> Self {
-        Self {
-            inv: 1.0 / cell,
-            map: Default::default(),
-        }
-    }
-    fn key(&self, p: [f64; 2]) -> (i64, i64) {
-        (
-            (p[0] * self.inv).floor() as i64,
-            (p[1] * self.inv).floor() as i64,
-        )
-    }
-    fn insert(&mut self, i: usize, p: [f64; 2]) {
-        self.map.entry(self.key(p)).or_default().push(i);
-    }
-    fn any_within(&self, pts: &[[f64; 2]], p: [f64; 2], r: f64) -> bool {
-        let (ky, kz) = self.key(p);
-        for dy in -1..=1 {
-            for dz in -1..=1 {
-                if let Some(v) = self.map.get(&(ky + dy, kz + dz)) {
-                    for &i in v {
-                        if (pts[i][0] - p[0]).hypot(pts[i][1] - p[1]) < r {
-                            return true;
-                        }
-                    }
-                }
-            }
-        }
-        false
-    }
 }
 
 /// How the body moves vertically. Speeds are downward-positive (entry speed).
@@ -521,72 +373,11 @@ mod tests {
     }
 
     #[test]
-    fn wedge_contains_and_dummies() {
+    fn wedge_contains() {
         let s = Section::wedge(30f64.to_radians(), 0.25, 0.29).unwrap();
         assert!(s.contains(0.0, 0.1));
         assert!(!s.contains(0.2, 0.05));
         assert!(s.contains(0.2, 0.2));
-        let dp = 0.005;
-        let pts = dummy_points(&s, dp, 3, dp / 4.0);
-        for p in &pts {
-            assert!(s.contains(p[0], p[1]));
-            let d = distance_to_polyline(&s.closed_contour(), p[0], p[1]);
-            assert!(d <= 3.0 * dp + 1e-12);
-        }
-        // Roughly three layers along the half contour and half the top (0.289 + 0.146 + 0.25 m long).
-        let expected = 3.0 * (0.2887 + 0.146 + 0.25) / dp;
-        let n = pts.len() as f64;
-        assert!(
-            n > 0.8 * expected && n < 1.2 * expected,
-            "{n} vs {expected}"
-        );
-    }
-
-    /// The band of a half domain at the keel: the first layer starts half a spacing off the symmetry
-    /// plane at its own depth, no point near the keel sits closer than 0.3 dp to the wall, and with its
-    /// mirror images the band has about as many points near the keel as the band of the whole section.
-    /// (The band built until 2026-11-29 put a point 0.05 dp from the wall of a 41 deg V and on the
-    /// wall of a 45 deg one.)
-    #[test]
-    fn a_half_domain_band_is_regular_at_the_keel() {
-        let dp = 0.01;
-        let mut sections: Vec<(String, Section)> = [10.0, 20.0, 30.0, 41.0, 45.0, 60.0]
-            .iter()
-            .map(|&deg: &f64| {
-                let s = Section::wedge(deg.to_radians(), 0.25, 0.6).unwrap();
-                (format!("{deg} deg V"), s)
-            })
-            .collect();
-        let flat = vec![[0.0, 0.0], [0.105, 0.0], [0.2, 0.1], [0.2, 0.3]];
-        sections.push(("flat keel".into(), Section::from_half_points(flat).unwrap()));
-        for (name, s) in &sections {
-            let c = s.closed_contour();
-            let half = dummy_points(s, dp, 3, dp / 4.0);
-            let full = dummy_points(s, dp, 3, f64::NEG_INFINITY);
-            let near = |p: &&[f64; 2]| p[0].hypot(p[1]) < 5.0 * dp;
-            for p in half.iter().filter(near) {
-                let d = distance_to_polyline(&c, p[0], p[1]);
-                assert!(d > 0.3 * dp, "{name}: a point {d} m from the wall at {p:?}");
-            }
-            let first = half
-                .iter()
-                .filter(|p| (p[0] - 0.5 * dp).abs() < 1e-9)
-                .min_by(|a, b| a[1].total_cmp(&b[1]))
-                .unwrap_or_else(|| panic!("{name}: no point dp/2 off the plane"));
-            let d = distance_to_polyline(&c, first[0], first[1]);
-            assert!(
-                (d - 0.5 * dp).abs() < 1e-9,
-                "{name}: first point {d} m deep"
-            );
-            let (n_half, n_full) = (
-                2 * half.iter().filter(near).count(),
-                full.iter().filter(near).count(),
-            );
-            assert!(
-                n_half.abs_diff(n_full) <= 2,
-                "{name}: {n_half} points near the keel with the mirror images, {n_full} in the whole band"
-            );
-        }
     }
 
     #[test]

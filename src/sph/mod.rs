@@ -18,6 +18,7 @@ pub mod cost;
 pub mod counters;
 pub mod damping_zone;
 pub mod diffusion;
+pub mod dummy_band;
 pub mod eos;
 pub mod frame;
 pub mod integrator;

@@ -34,6 +34,7 @@ use crate::sph::boundary::{adami2012, kruisbrink2018};
 use crate::sph::case::{ForceMethod, SensorMethod, Setup};
 use crate::sph::counters::{Counters, Stage};
 use crate::sph::damping_zone::DampingZone;
+use crate::sph::dummy_band;
 use crate::sph::eos::Eos;
 use crate::sph::integrator;
 use crate::sph::kernel::WendlandC2;
@@ -184,7 +185,7 @@ impl Simulation {
                 t0 = -clearance / v0;
             }
             let y_min = if mirror { 0.25 * dp } else { f64::NEG_INFINITY };
-            for p in body::dummy_points(sec, dp, layers, y_min) {
+            for p in dummy_band::dummy_points(sec, dp, layers, y_min) {
                 pt.push(
                     Kind::Body,
                     p[0],
