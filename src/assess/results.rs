@@ -151,12 +151,35 @@ pub fn sensor_warnings(r: &SphRecord, analytic: Option<&Estimate>) -> Vec<String
                     )
                 },
             );
+            // What was compared with the threshold: the slamming peak in the sensor's impact window when
+            // the record has one (the run's largest value may come later, with the water that reached
+            // the sensor after the window), else the run's largest value.
+            let reached = match (q.slamming_peak_pa, q.impact_window_s) {
+                (Some(p), Some([t0, t1])) => {
+                    let later = if q.raw_peak_pa > p {
+                        format!(
+                            "; the run's largest value, {:.3} kPa at {:.3} s, came after it",
+                            q.raw_peak_pa * 1e-3,
+                            q.peak_time_s
+                        )
+                    } else {
+                        String::new()
+                    };
+                    format!(
+                        "within its impact window ({t0:.3}-{t1:.3} s: largest {:.3} kPa, below \
+                         {DRY_FRACTION} x 1/2 rho V^2{later})",
+                        p * 1e-3
+                    )
+                }
+                _ => format!(
+                    "within the run (raw peak {:.3} kPa, below {DRY_FRACTION} x 1/2 rho V^2)",
+                    q.raw_peak_pa * 1e-3
+                ),
+            };
             out.push(format!(
-                "sensor {}: the SPH water did not reach it with a slamming pressure within the run (raw peak \
-                 {:.3} kPa, below {DRY_FRACTION} x 1/2 rho V^2): the flow separated from the contour below \
-                 it or reached it only after the run; {a}",
-                q.name,
-                q.raw_peak_pa * 1e-3
+                "sensor {}: the SPH water did not reach it with a slamming pressure {reached}: the flow \
+                 separated from the contour below it or reached it only after that; {a}",
+                q.name
             ));
         }
     }

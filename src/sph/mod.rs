@@ -447,9 +447,9 @@ pub fn widened_sensor_warning(sensors: &[NamedSummary]) -> Option<String> {
         .collect();
     (!list.is_empty()).then(|| {
         format!(
-            "{WIDENED_SENSORS}: {}. A force panel narrower than {} particle spacings over-reads the \
-             passage of single particles at the jet root, so each is integrated over {} spacings about its \
-             centre (docs/guide/numerics.md)",
+            "{WIDENED_SENSORS}: {}. A sensor narrower than {} particle spacings reads the passage of \
+             single particles at the jet root and its peak is biased high, so each is integrated over {} \
+             spacings about its centre (docs/guide/numerics.md)",
             list.join("; "),
             sensors::MIN_WIDTH_DP,
             sensors::MIN_WIDTH_DP
