@@ -216,8 +216,8 @@ fn a_deep_v_keel_run_keeps_its_water_out_of_the_body() {
     );
 }
 
-/// Station 0.08 Lpp of a 150 m bulbous-bow feeder made for testing (`docs/numerics/wedge-convergence.md`,
-/// item 24; not a published hull): a 52 deg V given as 60 offset points, 0.25-0.30 m apart, driven at
+/// Station 0.08 Lpp of a 150 m bulbous-bow feeder made for testing (`tests/data/bulbous-feeder.toml`;
+/// `docs/numerics/wedge-convergence.md`, item 24; not a published hull): a 52 deg V given as 60 offset points, 0.25-0.30 m apart, driven at
 /// 9.2 m/s to 1.1 s, about 45 particle spacings of keel depth at the spacing the assessment chose for
 /// it (226.6 mm, 1.32 spacings a segment). With the band that gave each segment its own points (one
 /// point each here, the wall 24 % sparse) the water next to the wall lost its pressure, 288 particles
