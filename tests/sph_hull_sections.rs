@@ -217,16 +217,42 @@ fn a_deep_v_keel_run_keeps_its_water_out_of_the_body() {
 }
 
 /// Station 0.08 Lpp of a 150 m bulbous-bow feeder made for testing (`tests/data/bulbous-feeder.toml`;
-/// `docs/numerics/wedge-convergence.md`, item 24; not a published hull): a 52 deg V given as 60 offset points, 0.25-0.30 m apart, driven at
-/// 9.2 m/s to 1.1 s, about 45 particle spacings of keel depth at the spacing the assessment chose for
-/// it (226.6 mm, 1.32 spacings a segment). With the band that gave each segment its own points (one
-/// point each here, the wall 24 % sparse) the water next to the wall lost its pressure, 288 particles
-/// were pushed back out of the body and the run blew up at 1.05 s. About 15 s on 2 cores:
+/// `docs/numerics/wedge-convergence.md`, item 24; not a published hull): a 52 deg V given as 60 offset
+/// points, 0.25-0.30 m apart, driven at 9.2 m/s to 1.1 s, about 45 particle spacings of keel depth at the
+/// spacing the assessment chose for it (226.6 mm, 1.32 spacings a segment). With the band that gave each
+/// segment its own points (one point each here, the wall 24 % sparse) the water next to the wall lost its
+/// pressure, 288 particles were pushed back out of the body and the run blew up at 1.05 s. About 15 s on
+/// 2 cores:
 /// `cargo test --release --test sph_hull_sections -- --ignored short_offset`.
 #[test]
 #[ignore = "regression run, about 15 s"]
 fn a_section_of_short_offset_segments_keeps_its_water_out_of_the_body() {
-    let section = Section::from_half_points(vec![
+    let section = feeder_station_008();
+    let setup = sph::case::resolve(
+        "feeder 0.08 Lpp",
+        &section,
+        &MotionSpec::Constant { speed_m_s: 9.2 },
+        Vec::new(),
+        &Overrides {
+            dp: Some(0.226595),
+            t_end: Some(1.1),
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    let r = sph::run(setup, &RunOptions::default()).unwrap();
+    let s = &r.summary;
+    assert!(s.stopped_early.is_none(), "{:?}", s.stopped_early);
+    assert!(
+        s.counters.contact_corrections <= 20,
+        "{} water particles put back out of the body",
+        s.counters.contact_corrections
+    );
+}
+
+/// Station 0.08 Lpp of `tests/data/bulbous-feeder.toml`, as its offsets give it.
+fn feeder_station_008() -> Section {
+    Section::from_half_points(vec![
         [0.0, 0.0],
         [0.3806, 0.2373],
         [0.5612, 0.4746],
@@ -288,25 +314,21 @@ fn a_section_of_short_offset_segments_keeps_its_water_out_of_the_body() {
         [8.8897, 13.7627],
         [9.0638, 14.0],
     ])
+    .unwrap()
+}
+
+/// The section of the short-segment regression run is the hull file's station 0.08 Lpp, point for
+/// point, so the committed test hull reproduces the run (`docs/numerics/wedge-convergence.md`, item 24).
+#[test]
+fn the_short_segment_section_is_the_test_hull_s_station() {
+    let hull = Hull::from_file(std::path::Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/bulbous-feeder.toml"
+    )))
     .unwrap();
-    let setup = sph::case::resolve(
-        "feeder 0.08 Lpp",
-        &section,
-        &MotionSpec::Constant { speed_m_s: 9.2 },
-        Vec::new(),
-        &Overrides {
-            dp: Some(0.226595),
-            t_end: Some(1.1),
-            ..Default::default()
-        },
-    )
-    .unwrap();
-    let r = sph::run(setup, &RunOptions::default()).unwrap();
-    let s = &r.summary;
-    assert!(s.stopped_early.is_none(), "{:?}", s.stopped_early);
-    assert!(
-        s.counters.contact_corrections <= 20,
-        "{} water particles put back out of the body",
-        s.counters.contact_corrections
+    let x = 0.5 * 150.0 - 0.08 * 150.0;
+    assert_eq!(
+        hull.section_at(x).unwrap().points,
+        feeder_station_008().half_points()
     );
 }
