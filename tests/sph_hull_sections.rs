@@ -194,26 +194,7 @@ fn a_deep_v_keel_run_keeps_its_water_out_of_the_body() {
         [2.404893, 7.0],
     ])
     .unwrap();
-    let setup = sph::case::resolve(
-        "patrol 0.1 Lpp",
-        &section,
-        &MotionSpec::Constant { speed_m_s: 8.693 },
-        Vec::new(),
-        &Overrides {
-            dp: Some(0.060125),
-            t_end: Some(0.581),
-            ..Default::default()
-        },
-    )
-    .unwrap();
-    let r = sph::run(setup, &RunOptions::default()).unwrap();
-    let s = &r.summary;
-    assert!(s.stopped_early.is_none(), "{:?}", s.stopped_early);
-    assert!(
-        s.counters.contact_corrections <= 20,
-        "{} water particles put back out of the body",
-        s.counters.contact_corrections
-    );
+    runs_without_water_in_the_body("patrol 0.1 Lpp", &section, 8.693, 0.060125, 0.581);
 }
 
 /// Station 0.08 Lpp of a 150 m bulbous-bow feeder made for testing (`tests/data/bulbous-feeder.toml`;
@@ -227,25 +208,30 @@ fn a_deep_v_keel_run_keeps_its_water_out_of_the_body() {
 #[test]
 #[ignore = "regression run, about 15 s"]
 fn a_section_of_short_offset_segments_keeps_its_water_out_of_the_body() {
-    let section = feeder_station_008();
+    runs_without_water_in_the_body("feeder 0.08 Lpp", &feeder_station_008(), 9.2, 0.226595, 1.1);
+}
+
+/// A deep entry of `section` at constant `speed` (m/s), spacing `dp` (m), to `t_end` (s): the run must
+/// reach its end, with at most 20 water particles put back out of the body.
+fn runs_without_water_in_the_body(label: &str, section: &Section, speed: f64, dp: f64, t_end: f64) {
     let setup = sph::case::resolve(
-        "feeder 0.08 Lpp",
-        &section,
-        &MotionSpec::Constant { speed_m_s: 9.2 },
+        label,
+        section,
+        &MotionSpec::Constant { speed_m_s: speed },
         Vec::new(),
         &Overrides {
-            dp: Some(0.226595),
-            t_end: Some(1.1),
+            dp: Some(dp),
+            t_end: Some(t_end),
             ..Default::default()
         },
     )
     .unwrap();
     let r = sph::run(setup, &RunOptions::default()).unwrap();
     let s = &r.summary;
-    assert!(s.stopped_early.is_none(), "{:?}", s.stopped_early);
+    assert!(s.stopped_early.is_none(), "{label}: {:?}", s.stopped_early);
     assert!(
         s.counters.contact_corrections <= 20,
-        "{} water particles put back out of the body",
+        "{label}: {} water particles put back out of the body",
         s.counters.contact_corrections
     );
 }
