@@ -92,6 +92,57 @@ fn a_station_without_sensors_gets_panels_every_5_percent_of_the_girth_to_the_dec
     assert_eq!(e.entry.as_ref().unwrap().sensors.len(), q.sensors.len());
 }
 
+#[test]
+fn a_dry_bow_station_is_assessed_from_the_water_reaching_its_keel() {
+    // The synthetic patrol boat's keel rises to the stem: at 0.05 Lpp it is above the calm waterline.
+    let h = Hull::from_file(&data("tests/data/hard-chine-patrol.toml")).unwrap();
+    let sea = SeaState::from_file(&data("tests/data/north-sea-hs2.5.toml")).unwrap();
+    let f = 0.05;
+    let x = h.station_x(f);
+    let clearance = h.section_at(x).unwrap().keel_z() - h.loadings[0].draft_at(x, h.lpp);
+    assert!(clearance > 0.1, "the test needs a dry station: {clearance}");
+    let s = Settings {
+        stations: vec![f],
+        speeds: Some(vec![9.26]),
+        fidelity: Fidelity::Analytic,
+        ..Settings::default()
+    };
+    let plan = assess::plan::plan(&h, &sea, &s).unwrap();
+    // its panels divide the keel-to-deck girth (D05..D95), and a warning says what a dry station's event is
+    let q = &plan.sensors[0];
+    assert!(q.default);
+    assert_eq!(q.sensors.first().unwrap().name, "D05");
+    assert_eq!(q.sensors.last().unwrap().name, "D95");
+    let girth = h.section_at(x).unwrap().girth();
+    assert!((q.sensors[0].width_m - 0.05 * girth).abs() < 1e-9);
+    assert!(
+        plan.warnings.iter().any(|w| w.contains("is a dry station")
+            && w.contains(&format!("{clearance:.3} m above the calm waterline"))),
+        "{:?}",
+        plan.warnings
+    );
+    // the regular design wave wets the keel, with the draft negative in the event
+    let e = plan.events.iter().find(|e| e.entry.is_some()).unwrap();
+    assert!((e.draft_m + clearance).abs() < 1e-9, "{}", e.draft_m);
+    assert!(e.entry_velocity_m_s.unwrap() > 0.0);
+    // and the analytic assessment gives every panel below the chine a design pressure
+    let a = analytic(
+        "tests/data/hard-chine-patrol.toml",
+        "tests/data/north-sea-hs2.5.toml",
+        vec![f],
+        Some(vec![9.26]),
+    );
+    let st = &a.stations[0];
+    assert!(st.emerging_events > 0);
+    assert!(
+        st.design_pressure_pa[..5]
+            .iter()
+            .all(|d| d.value.is_some_and(|v| v.is_finite() && v > 0.0)),
+        "{:?}",
+        st.design_pressure_pa
+    );
+}
+
 fn hull_with_limits(dir: &Path, limits: &str) -> PathBuf {
     let text = std::fs::read_to_string(data("hulls/ochi-vform.toml")).unwrap();
     let p = dir.join("limited.toml");

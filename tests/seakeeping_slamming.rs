@@ -96,6 +96,34 @@ fn keel_entry_instant_and_profile() {
 }
 
 #[test]
+fn keel_entry_of_a_dry_station_is_the_water_reaching_its_keel() {
+    // keel 0.2 m above the calm water (draft -0.2): s falls through -0.2 where cos(w t + 0.4) = -0.4
+    let we = 2.0;
+    let rm = RelativeMotion {
+        x: 1.0,
+        motion: Complex::from_polar(1.0, 0.4),
+        velocity: Complex::new(0.0, we) * Complex::from_polar(1.0, 0.4),
+    };
+    let (zeta_a, draft) = (0.5, -0.2);
+    let e = relative_motion::keel_entry(&rm, we, zeta_a, draft, 10.0, 50).unwrap();
+    let s = |t: f64| (rm.motion * Complex::new(0.0, we * t).exp()).re * zeta_a;
+    assert!((s(e.t_entry) - draft).abs() < 1e-9, "{}", s(e.t_entry));
+    assert!(s(e.t_entry + 1e-4) < draft, "the water rises past the keel");
+    // V = w sqrt(amp^2 - T^2) at the crossing, the same as for a keel 0.2 m deep
+    let v = we * (zeta_a * zeta_a - draft * draft).sqrt();
+    assert!(
+        (e.entry_velocity - v).abs() < 1e-9,
+        "{} vs {v}",
+        e.entry_velocity
+    );
+    let last = e.samples.last().unwrap();
+    assert!((last.penetration - (draft + zeta_a)).abs() < 1e-3);
+    // a wave whose relative motion does not reach the keel gives no entry (it did, wrongly, before
+    // dry stations were allowed: the test was amp <= draft)
+    assert!(relative_motion::keel_entry(&rm, we, 0.15, draft, 10.0, 50).is_none());
+}
+
+#[test]
 fn ochi_formulas() {
     let v_th = slamming::threshold_velocity(G, 6.0);
     assert!((v_th - 0.7135).abs() < 1e-3, "{v_th}"); // ochi1958_vform.toml: 0.7135 m/s for Lpp 6 m

@@ -123,13 +123,14 @@ pub fn scaled_entry(
     // Entry velocity at amplitude z: at the instant s(t) = draft on the way down.
     let entry_v = |z: f64| {
         let a = s * z;
-        if a <= draft {
+        if a <= draft.abs() {
             return f64::NEG_INFINITY;
         }
         let t = ((draft / a).acos() - rm.motion.arg()) / omega_e;
         -(rm.velocity * Complex::new(0.0, omega_e * t).exp()).re * z
     };
-    let lo0 = draft / s * (1.0 + 1e-12);
+    // the smallest amplitude that reaches the keel: |draft| / |s| (a dry station has draft < 0)
+    let lo0 = draft.abs() / s * (1.0 + 1e-12);
     let (mut lo, mut hi) = (lo0, 2.0 * lo0.max(1e-6));
     while entry_v(hi) < v {
         hi *= 2.0;

@@ -603,7 +603,8 @@ pub fn run(
             .collect::<Vec<_>>(),
         "design_value": "per sensor and station, the largest design value over the events with an SPH run at \
                          that station (all events where none has one); per event: SPH slamming peak + its GCI \
-                         uncertainty where converged, else the larger of that and the analytic (MLM) peak \
+                         uncertainty where converged or acceptable (GCI at most 20 %), else the larger of that and the \
+                         analytic (MLM) peak \
                          (where the levels' peaks are different events, U is the difference between them), \
                          or the analytic peak where SPH does not resolve the impact, and no value where \
                          neither computes it (a flat keel's air-cushion impact without --air; with air the \

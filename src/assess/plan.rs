@@ -366,14 +366,31 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
             None => impact::air_cushion_warning(f, points),
         });
     }
-    for q in sensors.iter().filter(|q| q.default) {
+    for st in stations.iter().filter(|st| st.draft <= 0.0) {
         warnings.push(format!(
-            "station {} Lpp carries no sensors in the hull file: {} default panels {}..{} are used, one every \
-             5 % of the girth from the keel to the design waterline (each 5 % of it wide), continued up the \
-             side and flare to the deck edge",
+            "station {} Lpp is a dry station: its keel is {:.3} m above the calm waterline at loading \
+             '{}', so an event there is the water reaching the keel (keel entry when the relative motion \
+             exceeds that height; Ochi's statistics take that height for the draft), not a keel that emerges and \
+             re-enters",
+            st.aft_of_fp,
+            -st.draft,
+            loading.name
+        ));
+    }
+    for q in sensors.iter().filter(|q| q.default) {
+        let first = q.sensors.first().map_or("", |s| s.name.as_str());
+        let rule = if first.starts_with('D') {
+            "one every 5 % of the girth from the keel to the deck edge (each 5 % of it wide): the keel is \
+             above the design waterline, or its girth below it is less than a quarter of the whole"
+        } else {
+            "one every 5 % of the girth from the keel to the design waterline (each 5 % of it wide), \
+             continued up the side and flare to the deck edge"
+        };
+        warnings.push(format!(
+            "station {} Lpp carries no sensors in the hull file: {} default panels {first}..{} are used, \
+             {rule}",
             q.station,
             q.sensors.len(),
-            q.sensors.first().map_or("", |s| s.name.as_str()),
             q.sensors.last().map_or("", |s| s.name.as_str()),
         ));
     }

@@ -195,7 +195,8 @@ pub fn sensor_warnings(r: &SphRecord, analytic: Option<&Estimate>) -> Vec<String
         out.push(format!(
             "sensors {}: the analytic contact crosses them within the SPH contact transient (the keel less \
              than {} particle spacings deep, dp {:.2} mm), so SPH does not resolve their impact at this \
-             spacing; their design values are the analytic (MLM) estimates. A finer spacing near the keel \
+             spacing; their design values are the analytic (MLM) estimates where that model gives one (not \
+             on a panel already wetted at contact). A finer spacing near the keel \
              would resolve them",
             transient.join(", "),
             crate::sph::CONTACT_TRANSIENT_DP,

@@ -290,7 +290,7 @@ impl SpeedTrend {
     pub fn reading(&self, a: &Assessment) -> String {
         let sph = self.track.iter().filter(|t| t.3.starts_with("sph")).count();
         format!(
-            "The maxima of this track come from two models: {sph} of {} speeds' from an SPH run, the others \
+            "The maxima of this track come from two models: the maxima of {sph} of its {} speeds from an SPH run, the others \
              from the analytic estimate (SPH runs only where the screening asks for one). Where the two \
              differ, the station of the largest value follows the source rather than the speed. With the \
              analytic estimates alone at every event, {}.",

@@ -114,9 +114,11 @@ pub fn central_differences(t: &[f64], s: &[f64]) -> Vec<f64> {
 /// The keel entry of a station of local draft `draft` (m) in the record, and the profile after it until
 /// V reverses or the keel is `max_depth` (m) deep.
 pub fn measured_entry(r: &ForcingRecord, draft: f64, max_depth: f64) -> Result<MeasuredEntry> {
-    if !(draft.is_finite() && draft > 0.0 && max_depth.is_finite() && max_depth > 0.0) {
+    // A dry station (keel above the calm waterline) has a negative draft: its keel is out while s > draft
+    // as well.
+    if !(draft.is_finite() && max_depth.is_finite() && max_depth > 0.0) {
         return Err(Error::Invalid(format!(
-            "a measured entry needs a positive local draft and depth, got {draft} m and {max_depth} m"
+            "a measured entry needs a finite local draft and a positive depth, got {draft} m and {max_depth} m"
         )));
     }
     let t = &r.time_s;

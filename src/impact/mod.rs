@@ -20,7 +20,10 @@ use crate::sph::body::Section;
 use crate::sph::{MotionSpec, SensorSpec};
 
 /// The seakeeping station at `aft_of_fp` (fraction of Lpp aft of the FP) in `loading`: its local draft
-/// from the wetted half section and its keel-to-deck height.
+/// from the wetted half section and its keel-to-deck height. A station whose keel is above the calm
+/// waterline (a forefoot under a raked stem, a rising keel) is a dry station with a negative draft: the
+/// water reaches its keel when the relative motion exceeds the keel's height above the waterline
+/// ([`Station::dry`]); a section wholly above the waterline, deck included, is an error.
 pub fn seakeeping_station(
     hull: &Hull,
     loading: &LoadingCondition,
@@ -43,14 +46,23 @@ pub fn seakeeping_station(
             pts.push(q);
         }
     }
-    if pts.len() < 2 {
-        return Err(Error::Invalid(format!(
-            "station {aft_of_fp} Lpp aft of the FP is dry at loading '{}'",
-            loading.name
-        )));
-    }
-    let h = HalfSection::new(pts)?;
-    let mut st = Station::new(hull.lpp, aft_of_fp, &h, sec.deck_z() - sec.keel_z());
+    let height = sec.deck_z() - sec.keel_z();
+    let mut st = if pts.len() < 2 {
+        // The keel is above the calm waterline: a dry station, which the relative motion wets.
+        let clearance = sec.keel_z() - z_w;
+        if clearance >= height {
+            return Err(Error::Invalid(format!(
+                "station {aft_of_fp} Lpp aft of the FP: the whole section (keel {:.3} m, deck {:.3} m above \
+                 the baseline) is above the calm waterline at {z_w:.3} m at loading '{}'",
+                sec.keel_z(),
+                sec.deck_z(),
+                loading.name
+            )));
+        }
+        Station::dry(hull.lpp, aft_of_fp, clearance.max(0.0), height)
+    } else {
+        Station::new(hull.lpp, aft_of_fp, &HalfSection::new(pts)?, height)
+    };
     st.keel_slope = crate::seakeeping::entry_definitions::keel_slope(hull, loading, x)?;
     Ok(st)
 }

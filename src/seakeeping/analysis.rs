@@ -21,7 +21,8 @@ pub struct Station {
     pub aft_of_fp: f64,
     #[serde(rename = "x_m")]
     pub x: f64,
-    /// Keel depth below the local calm waterline (m).
+    /// Keel depth below the local calm waterline (m); negative for a keel above it (a dry station, such as
+    /// the forefoot under a raked stem or a rising keel), which only the waves' relative motion wets.
     #[serde(rename = "draft_m")]
     pub draft: f64,
     /// Keel-to-deck height of the section (m): the entry profile stops at this depth.
@@ -41,6 +42,18 @@ impl Station {
             aft_of_fp,
             x: 0.5 * lpp - aft_of_fp * lpp,
             draft: wetted.draft(),
+            height,
+            keel_slope: 0.0,
+        }
+    }
+
+    /// A station whose keel is above the local calm waterline by `clearance` (m, > 0): its draft is
+    /// -clearance, and the water reaches its keel only when the relative motion s falls below it.
+    pub fn dry(lpp: f64, aft_of_fp: f64, clearance: f64, height: f64) -> Self {
+        Self {
+            aft_of_fp,
+            x: 0.5 * lpp - aft_of_fp * lpp,
+            draft: -clearance,
             height,
             keel_slope: 0.0,
         }

@@ -13,6 +13,8 @@
 //!
 //! The keel at a station of local draft T is out of the water when s > T; keel entry happens when s falls
 //! through T, and from then on the section enters the water with velocity V(t) = -v(t) (downwards positive).
+//! A dry station (keel above the calm waterline, T < 0) is the same with T negative: its keel is out of the
+//! water while s > T, and keel entry needs |s| > -T.
 
 use nalgebra::Complex;
 
@@ -187,7 +189,9 @@ pub fn entry_samples(
 }
 
 /// Keel entry at a station of local draft `draft` in a regular wave of amplitude `zeta_a`. None when the
-/// keel does not emerge (|s| zeta_a <= draft). The profile runs from entry until the entry velocity
+/// keel does not emerge (|s| zeta_a <= draft) or, for a dry station (draft < 0, the keel above the calm
+/// waterline), when the water does not reach the keel (|s| zeta_a <= -draft): either way |s| zeta_a <=
+/// |draft|. The profile runs from entry until the entry velocity
 /// reverses or the keel is `max_depth` below the surface (e.g. the section fully wetted), with `n` samples.
 pub fn keel_entry(
     rm: &RelativeMotion,
@@ -198,7 +202,7 @@ pub fn keel_entry(
     n: usize,
 ) -> Option<KeelEntry> {
     let amp = rm.motion.norm() * zeta_a;
-    if amp <= draft || n < 2 {
+    if amp <= draft.abs() || n < 2 {
         return None;
     }
     let period = 2.0 * std::f64::consts::PI / omega_e;

@@ -108,12 +108,12 @@ pub fn dummy_points(section: &Section, dp: f64, layers: usize, y_min: f64) -> Ve
     pts
 }
 
-/// Unit tangent of segment `i` of the polyline `c` (from c[i] to c[i + 1]) and its length; `None` when
-/// it is shorter than [`DEGENERATE_DP`] dp.
-fn tangent(c: &[[f64; 2]], i: usize, dp: f64) -> Option<([f64; 2], f64)> {
+/// Unit tangent of segment `i` of the polyline `c` (from c[i] to c[i + 1]); `None` when the segment is
+/// shorter than [`DEGENERATE_DP`] dp.
+fn tangent(c: &[[f64; 2]], i: usize, dp: f64) -> Option<[f64; 2]> {
     let (ty, tz) = (c[i + 1][0] - c[i][0], c[i + 1][1] - c[i][1]);
     let l = ty.hypot(tz);
-    (l >= DEGENERATE_DP * dp).then(|| ([ty / l, tz / l], l))
+    (l >= DEGENERATE_DP * dp).then(|| [ty / l, tz / l])
 }
 
 /// The runs of the closed contour `c`: ranges of segment indices (segment i from c[i] to c[i + 1]), in
@@ -127,7 +127,7 @@ fn runs(c: &[[f64; 2]], dp: f64, mirror: bool) -> Vec<Range<usize>> {
     let mut out = Vec::new();
     let (mut start, mut last) = (0, None::<[f64; 2]>);
     for i in 0..n {
-        let t = tangent(c, i, dp).map(|(t, _)| t);
+        let t = tangent(c, i, dp);
         let corner = match (last, t) {
             (Some(a), Some(b)) => a[0] * b[0] + a[1] * b[1] < cos_corner,
             _ => false,
@@ -150,9 +150,9 @@ fn runs(c: &[[f64; 2]], dp: f64, mirror: bool) -> Vec<Range<usize>> {
 fn layer_points(c: &[[f64; 2]], run: Range<usize>, d: f64, dp: f64, mirror: bool) -> Vec<[f64; 2]> {
     // The segments with a direction, each with its inward normal (the body lies to the left of the
     // direction of travel).
-    let segs: Vec<(usize, [f64; 2], f64)> = run
+    let segs: Vec<(usize, [f64; 2])> = run
         .clone()
-        .filter_map(|i| tangent(c, i, dp).map(|(t, l)| (i, t, l)))
+        .filter_map(|i| tangent(c, i, dp).map(|t| (i, t)))
         .collect();
     if segs.len() == 1 || (run.len() == 1 && mirror) {
         // One segment: the points of the segment alone (`run.len() == 1` with a symmetry plane keeps a
@@ -176,7 +176,7 @@ fn layer_points(c: &[[f64; 2]], run: Range<usize>, d: f64, dp: f64, mirror: bool
     // The offset polyline at depth d with mitred joins.
     let normal = |t: [f64; 2]| [-t[1], t[0]];
     let mut off = Vec::with_capacity(segs.len() + 1);
-    let (i0, t0, _) = segs[0];
+    let (i0, t0) = segs[0];
     let n0 = normal(t0);
     off.push([c[i0][0] + d * n0[0], c[i0][1] + d * n0[1]]);
     for w in segs.windows(2) {
@@ -186,7 +186,7 @@ fn layer_points(c: &[[f64; 2]], run: Range<usize>, d: f64, dp: f64, mirror: bool
         let v = c[w[0].0 + 1];
         off.push([v[0] + k * (na[0] + nb[0]), v[1] + k * (na[1] + nb[1])]);
     }
-    let (il, tl, _) = segs[segs.len() - 1];
+    let (il, tl) = segs[segs.len() - 1];
     let nl = normal(tl);
     off.push([c[il + 1][0] + d * nl[0], c[il + 1][1] + d * nl[1]]);
     let lengths: Vec<f64> = off

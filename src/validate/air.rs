@@ -111,7 +111,7 @@ pub fn single_phase_limit(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcom
         entry(
             memo,
             &format!("wedge{deg}/{b}"),
-            &format!("wedge {deg} deg"),
+            &format!("wedge {deg:.0} deg"),
             &section,
             speed,
             t_end,
@@ -190,7 +190,7 @@ pub fn single_phase_limit(case: &Case, mode: Mode, memo: &Memo) -> Result<Outcom
     });
     o.figures.push(super::Figure {
         name: "force".into(),
-        title: format!("{deg} deg wedge at {speed} m/s: section force with and without air"),
+        title: format!("{deg:.0} deg wedge at {speed} m/s: section force with and without air"),
         x_label: "t (ms)".into(),
         y_label: "force (N/m)".into(),
         series: vec![

@@ -95,7 +95,10 @@ pub fn outline(s: &Suite, commit: &str) -> Result<Outline> {
         if let Some(Reference::Pending { reason }) = &c.reference {
             blocks.push(Block::Paragraph(format!("Pending data: {reason}")));
         }
-        blocks.push(Block::Paragraph(format!("Provenance: {}.", c.provenance)));
+        blocks.push(Block::Paragraph(sentence(&format!(
+            "Provenance: {}",
+            c.provenance
+        ))));
         blocks.push(Block::List(case_inputs(c)));
         if !c.notes.is_empty() {
             blocks.push(Block::List(c.notes.clone()));
@@ -141,4 +144,15 @@ pub fn pdf(s: &Suite, commit: &str) -> Result<Vec<u8>> {
         blocks: o.blocks,
     }
     .pdf()
+}
+
+/// `text` as a sentence: with a full stop at its end unless it already ends with one (a provenance that
+/// ends in an abbreviation or a sentence of its own).
+fn sentence(text: &str) -> String {
+    let t = text.trim_end();
+    if t.ends_with('.') {
+        t.to_string()
+    } else {
+        format!("{t}.")
+    }
 }
