@@ -143,6 +143,51 @@ fn a_dry_bow_station_is_assessed_from_the_water_reaching_its_keel() {
     );
 }
 
+#[test]
+fn panels_above_a_chine_are_named_in_a_warning() {
+    // The patrol boat's station 0.1 Lpp has a 30 deg chine; its default panels run up to the deck.
+    let h = Hull::from_file(&data("tests/data/hard-chine-patrol.toml")).unwrap();
+    let sea = SeaState::from_file(&data("tests/data/north-sea-hs2.5.toml")).unwrap();
+    let at = |f: f64| Settings {
+        stations: vec![f],
+        speeds: Some(vec![9.26]),
+        fidelity: Fidelity::Analytic,
+        ..Settings::default()
+    };
+    let plan = assess::plan::plan(&h, &sea, &at(0.1)).unwrap();
+    let w: Vec<&String> = plan
+        .warnings
+        .iter()
+        .filter(|w| w.contains("has a chine at girth"))
+        .collect();
+    assert_eq!(w.len(), 1, "{:?}", plan.warnings);
+    let chine =
+        slamtool::assess::chines::chines(&h.section_at(h.station_x(0.1)).unwrap().points)[0];
+    assert!(
+        w[0].contains(&format!("girth {:.3} m", chine.girth_m)),
+        "{}",
+        w[0]
+    );
+    let above = plan.sensors[0]
+        .sensors
+        .iter()
+        .filter(|s| s.s_m - 0.5 * s.width_m >= chine.girth_m)
+        .count();
+    assert!(w[0].contains(&format!("({above} panels,")), "{}", w[0]);
+    // station 0.15 has its two sensors below the chine: no warning
+    let plan = assess::plan::plan(&h, &sea, &at(0.15)).unwrap();
+    assert!(!plan.warnings.iter().any(|w| w.contains("has a chine")));
+    // nor has any station of the Ochi hull (smooth sections; the flat keels' edges are not chines)
+    let ochi = Hull::from_file(&data("hulls/ochi-vform.toml")).unwrap();
+    let osea = SeaState::from_file(&data("sea_states/ochi-1958.toml")).unwrap();
+    let s = Settings {
+        fidelity: Fidelity::Analytic,
+        ..Settings::default()
+    };
+    let plan = assess::plan::plan(&ochi, &osea, &s).unwrap();
+    assert!(!plan.warnings.iter().any(|w| w.contains("has a chine")));
+}
+
 fn hull_with_limits(dir: &Path, limits: &str) -> PathBuf {
     let text = std::fs::read_to_string(data("hulls/ochi-vform.toml")).unwrap();
     let p = dir.join("limited.toml");

@@ -27,8 +27,9 @@ use super::results::EventResult;
 pub const DEFINITION: &str = "total bow slamming force F = integral of the section force per metre f(x) over \
 x, f linear between the assessed stations (trapezoid rule), from the aftmost to the foremost assessed \
 station only (no extrapolation), f = 0 where the keel stays in the water; point of action x_F = integral \
-of x f dx / F (m from midship, positive forward). peak_sum: f = each station's peak section force (SPH \
-where run, else the analytic force), an upper bound because the peaks are not simultaneous; \
+of x f dx / F (m from midship, positive forward). peak_sum: f = each station's design section force in that \
+event (the design rule: the SPH peak plus its uncertainty where SPH ran, or the analytic force where it did not or \
+governs), an upper bound of the computed section forces because the peaks are not simultaneous; \
 time_coincident: the largest over time of the integral of the analytic force histories placed at \
 each station's keel-entry instant, each scaled to its station's design section force (so that it never \
 exceeds peak_sum)";

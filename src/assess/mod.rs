@@ -22,6 +22,7 @@
 pub mod analytic;
 pub mod bow_force;
 pub mod cache;
+pub mod chines;
 pub mod comparisons;
 pub mod design_event;
 pub mod design_rule;

@@ -377,6 +377,9 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
             loading.name
         ));
     }
+    for q in &sensors {
+        warnings.extend(chine_warning(hull, q)?);
+    }
     for q in sensors.iter().filter(|q| q.default) {
         let first = q.sensors.first().map_or("", |s| s.name.as_str());
         let rule = if first.starts_with('D') {
@@ -523,4 +526,47 @@ fn flare_event(
         },
         motion,
     ))
+}
+
+/// The warning of a station whose panels lie above a chine (the first one up the contour,
+/// [`super::chines`]): their analytic estimates assume attached flow past it. None without such panels.
+fn chine_warning(hull: &Hull, q: &StationSensors) -> Result<Option<String>> {
+    let points = &hull.section_at(q.x)?.points;
+    let Some(c) = super::chines::chines(points).into_iter().next() else {
+        return Ok(None);
+    };
+    let above: Vec<&str> = q
+        .sensors
+        .iter()
+        .filter(|s| s.s_m - 0.5 * s.width_m >= c.girth_m - 1e-9)
+        .map(|s| s.name.as_str())
+        .collect();
+    if above.is_empty() {
+        return Ok(None);
+    }
+    let names = if above.len() > 6 {
+        format!(
+            "{} panels, {}..{}",
+            above.len(),
+            above[0],
+            above[above.len() - 1]
+        )
+    } else {
+        above.join(", ")
+    };
+    Ok(Some(format!(
+        "station {} Lpp has a chine at girth {:.3} m (y {:.3} m, {:.3} m above the keel), where the contour \
+         turns {:.0} deg steeper ({:.0} to {:.0} deg of deadrise): the flow can separate there, while the \
+         analytic models assume it stays attached and can read several times the SPH pressure above a chine. The \
+         analytic values of the panels above it ({names}), and of the section force once the chine is \
+         wetted, are attached-flow bounds; where one is a design value (SPH not converged or not \
+         resolved), refine the SPH run rather than sign it",
+        q.station,
+        c.girth_m,
+        c.y_m,
+        c.z_m,
+        c.turn_deg(),
+        c.deadrise_below_deg,
+        c.deadrise_above_deg
+    )))
 }

@@ -401,11 +401,15 @@ pub fn page(r: &mut Report, saved: &Saved) {
     match top {
         Some(b) => r.para(&format!(
             "Total bow slamming force, largest over the events: {:.1} N at {} m/s in {}, point of action \
-             {:.3} m from midship: the integral along the hull (trapezoid rule) of each station's section \
-             force peak in that event, SPH where it ran in that event and the analytic force elsewhere \
-             (so not built from the table above), over the span from the aftmost to the foremost assessed \
-             station only, with nothing extrapolated forward or aft of them; an upper bound for that span, \
-             since the stations' peaks do not occur together. At one instant: {} N. Verdict: {}.",
+             {:.3} m from midship: the integral along the hull (trapezoid rule) of each station's design \
+             section force in that one event (the design rule as in the table above: the SPH peak plus its \
+             uncertainty where SPH ran, the analytic force where it did not or governs; where a station's \
+             largest design force comes from another event, the table above differs), over the span from the \
+             aftmost to the foremost assessed station only, with nothing extrapolated forward or aft of them; \
+             an upper bound of the computed section forces over that span, since the stations' peaks do not \
+             occur together (a flat keel's acoustic impact is not among them, see the flags). At one instant \
+             (each station's analytic force history placed at its keel-entry time and scaled to its design \
+             section force): {} N. Verdict: {}.",
             num(b, "peak_sum_total_n").unwrap_or(f64::NAN),
             speed_text(num(b, "speed_m_per_s")),
             text(b, "wave"),
