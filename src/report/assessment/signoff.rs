@@ -11,9 +11,13 @@ use super::data::{Saved, at, fmt, list, num, speed_text, text};
 use crate::loads::anatomy::KEEL_MAXIMUM_FROM_DEG;
 use crate::report::document::Block;
 
-/// The verdict as words ("-" where none applies).
+/// The verdict as words ("-" where none applies). A two-phase cushion peak's verdict is one of spacing
+/// only: the peak grows with the water's artificial sound speed, which no spacing study removes.
 fn verdict_words(d: &Value) -> String {
     match d["verdict"].as_str() {
+        Some(v) if text(d, "source").contains("artificial sound speed") => {
+            format!("{} in spacing only (grows with c0)", v.replace('_', " "))
+        }
         Some(v) => v.replace('_', " "),
         None => "-".into(),
     }
@@ -324,7 +328,8 @@ pub fn page(r: &mut Report, saved: &Saved) {
              pressure maximum is at the keel), SPH impact status, slamming peak time, the impact \
                   window it was taken from (Wagner's contact crossing the panel, widened by half its time \
                   and by one particle spacing of penetration for the SPH contact's lag), the analytic \
-                  (MLM) peak time, rise time, impulse over the impact window (the sph_impulse_pa_s column \
+                  (MLM) peak time, rise time (of the SPH record: from its last sample below a tenth of the \
+                  slamming peak, within the window, to the peak), impulse over the impact window (the sph_impulse_pa_s column \
                   of pressures.csv is over the whole record), particles across the analytic wetted half-width when \
                   the contact crosses the panel (at the spacing of the keel stage that resolved it, where one did: \
                   a fine run of the section's lower part, see the SPH notes), and the water-hammer bound rho c_w V of a flat keel \
@@ -373,7 +378,10 @@ pub fn page(r: &mut Report, saved: &Saved) {
         .collect();
     r.push(Block::Table {
         caption: "Section force per metre (N/m): design value, SPH slamming peak ± U, analytic (corrected MLM; \
-                  flat-plate Wagner after a flat keel's start), buoyancy at the SPH peak (the hydrostatic part), source and verdict"
+                  flat-plate Wagner after a flat keel's start), buoyancy at the SPH peak (the hydrostatic part), source and verdict. \
+                  U covers the spacing only: at the automatic sound speed the SPH section force of a wedge reads \
+                  7-9 % below its value as c0 grows (docs/numerics/wedge-convergence.md, item 10), and a flat \
+                  keel's acoustic impact is not in these forces (see the flags)"
             .into(),
         header: [
             "station",
