@@ -42,18 +42,28 @@ pub fn reference_text(r: Option<&Reference>, unit: &str) -> String {
 
 /// The summary row of a case.
 pub fn summary_row(c: &CaseResult) -> SummaryRow {
+    // A ratio's unit "-" is named in the quantity column only, not after every number.
+    let unit = if c.unit == "-" { "" } else { c.unit.as_str() };
     SummaryRow {
         case: c.name.clone(),
         quantity: format!("{} ({})", c.quantity, c.unit),
         computed: c
             .computed
             .filter(|x| x.is_finite())
-            .map_or("–".into(), |x| format!("{} {}", trim(x), c.unit)),
-        reference: reference_text(c.reference.as_ref(), &c.unit),
-        error: compare::error_text(c.error, c.tolerance, &c.unit),
-        tolerance: compare::tolerance_text(c.tolerance, &c.unit),
+            .map_or("–".into(), |x| tidy(format!("{} {unit}", trim(x)))),
+        reference: tidy(reference_text(c.reference.as_ref(), unit)),
+        error: tidy(compare::error_text(c.error, c.tolerance, unit)),
+        tolerance: tidy(compare::tolerance_text(c.tolerance, unit)),
         verdict: c.verdict.label().into(),
     }
+}
+
+/// A cell without the double or trailing space an empty unit leaves.
+fn tidy(s: String) -> String {
+    s.split(' ')
+        .filter(|w| !w.is_empty())
+        .collect::<Vec<_>>()
+        .join(" ")
 }
 
 /// One row per case.
