@@ -326,3 +326,19 @@ pub fn write(s: &Suite, dir: &Path, suite_provenance: &Provenance) -> Result<Vec
     }
     Ok(files)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_empty_unit_leaves_no_double_or_trailing_space() {
+        assert_eq!(tidy(format!("{} {}", "1.983", "")), "1.983");
+        assert_eq!(
+            tidy(format!("≤ {} {} (one-sided bound)", "1", "")),
+            "≤ 1 (one-sided bound)"
+        );
+        assert_eq!(tidy(format!("{} – {} {}", "0.4", "1", "")), "0.4 – 1");
+        assert_eq!(tidy("+4.1 %".to_string()), "+4.1 %");
+    }
+}

@@ -243,6 +243,18 @@ pub fn page(r: &mut Report, saved: &Saved) {
         KEEL_MAXIMUM_FROM_DEG,
         fmt(num(&s["settings"], "water_density_kg_m3"), 1.0, 1)
     ));
+    let air = text(&s["settings"], "air");
+    if air == "auto" || air == "on" {
+        r.para(&format!(
+            "Air: this assessment ran with --air {air}, so the stations it ran with air (see the SPH notes) \
+             have every panel and section force from two-phase runs, those above a flat keel included. \
+             Those values can differ from a single-phase assessment of the same hull and sea (the two-phase \
+             runs converge differently, and the cushion peaks on a flat keel grow with the water's \
+             artificial sound speed, so they are not design values). Where this hull is also assessed \
+             without air, sign the larger of the two values of each panel away from the flat keel; the \
+             two-phase model's validation is incomplete (docs/guide/air.md)."
+        ));
+    }
     if list(s, "irregular").is_empty() {
         r.para(
             "No irregular sea in this assessment: the design values below are those of the regular waves \
