@@ -27,9 +27,16 @@ fn verdict_words(d: &Value) -> String {
 fn flags(d: &Value) -> Vec<String> {
     let mut f: Vec<String> = Vec::new();
     if let Some(l) = num(d, "later_load") {
+        // a panel whose impact a keel stage resolved: its later load is the main run's reading
+        let source = if num(d, "stage_dp_m").is_some() {
+            "; read in the main SPH run, whose spacing does not resolve this panel's impact (the keel \
+             stage does) but covers the slower immersion after it, and not convergence-checked"
+        } else {
+            ""
+        };
         f.push(format!(
             "a larger load after the impact, in the immersion phase ({:.2} kPa, of which {:.2} kPa \
-             hydrostatic): not a slamming pressure, check it as a load case of its own",
+             hydrostatic{source}): not a slamming pressure, check it as a load case of its own",
             l / 1e3,
             num(d, "later_load_hydrostatic").unwrap_or(0.0) / 1e3
         ));
