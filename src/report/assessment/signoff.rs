@@ -236,7 +236,10 @@ pub fn page(r: &mut Report, saved: &Saved) {
          levels' peaks are different events, the difference between them. Verdicts: converged (GCI at \
          most 5 %), acceptable (at most 20 %), not converged (above 20 %: refine before relying on the \
          SPH value), mismatched (the coarser level's peak is another event), not assessed (one level, \
-         or no SPH impact). On a panel of {:.1} deg local deadrise or more the similarity solution's \
+         or no SPH impact). A verdict measures how much the peak moves between the run's spacings, not \
+         its error against an exact solution: on the validation's constant-speed wedges the default \
+         level's force-panel peaks read 0.86-1.38 of the exact similarity pressure (validation case \
+         wedge-convergence-table, a known failure; docs/numerics/wedge-convergence.md). On a panel of {:.1} deg local deadrise or more the similarity solution's \
          pressure maximum is at the keel and no impact pulse crosses the panel: its levels are compared \
          by value, whatever their times. A panel with no design value (\"-\") is one no model here computes. \
          Analytic: the modified Logvinovich model (MLM) for pressures and forces, each corrected to the \
