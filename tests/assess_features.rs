@@ -171,8 +171,12 @@ fn panels_above_a_chine_are_named_in_a_warning() {
     let above = plan.sensors[0]
         .sensors
         .iter()
-        .filter(|s| s.s_m - 0.5 * s.width_m >= chine.girth_m)
+        .filter(|s| s.s_m + 0.5 * s.width_m > chine.girth_m)
         .count();
+    // the panel that straddles the chine is among them
+    assert!(plan.sensors[0].sensors.iter().any(
+        |s| s.s_m - 0.5 * s.width_m < chine.girth_m && s.s_m + 0.5 * s.width_m > chine.girth_m
+    ));
     assert!(w[0].contains(&format!("({above} panels,")), "{}", w[0]);
     // station 0.15 has its two sensors below the chine: no warning
     let plan = assess::plan::plan(&h, &sea, &at(0.15)).unwrap();

@@ -7,9 +7,11 @@
 //! [`crate::analytic`]) assume the flow stays attached. Past such a chine they keep following the side:
 //! with the side's slope f' and the bottom's contact speed dc/dt their pressure maximum
 //! 1/2 rho (dc/dt)^2 (1 + f'^2) is that of a far steeper body hit as fast as the bottom, several times the
-//! bottom's own (on the synthetic patrol boat of `tests/data/hard-chine-patrol.toml`, station 0.1 Lpp at
-//! 9.1 m/s: 352 kPa on the panel just above a 30 deg chine, against 17 kPa in the SPH run, whose flow
-//! separates there). Continuing the bottom with a fictitious body past the chine (Tassin et al. 2014,
+//! bottom's own. On the synthetic patrol boat of `tests/data/hard-chine-patrol.toml`, station 0.1 Lpp,
+//! entry at 9.12 m/s (`--station 0.1 --speeds 12.35`), the default panel D55 that straddles the 30 deg
+//! chine reads 128 kPa analytic against 3.5 kPa in the SPH run, whose flow separates there, and D60 above
+//! it 99 kPa against a panel the SPH water never reaches; 2 cm panels read 352 kPa against 17 kPa just
+//! above the chine. Continuing the bottom with a fictitious body past the chine (Tassin et al. 2014,
 //! Applied Ocean Research 48, 33-41) is the published remedy; it is not built. These chines are found
 //! here so that the assessment can say which panels it concerns.
 //!

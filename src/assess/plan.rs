@@ -528,7 +528,7 @@ fn flare_event(
     ))
 }
 
-/// The warning of a station whose panels lie above a chine (the first one up the contour,
+/// The warning of a station whose panels reach above a chine (the first one up the contour,
 /// [`super::chines`]): their analytic estimates assume attached flow past it. None without such panels.
 fn chine_warning(hull: &Hull, q: &StationSensors) -> Result<Option<String>> {
     let points = &hull.section_at(q.x)?.points;
@@ -538,7 +538,7 @@ fn chine_warning(hull: &Hull, q: &StationSensors) -> Result<Option<String>> {
     let above: Vec<&str> = q
         .sensors
         .iter()
-        .filter(|s| s.s_m - 0.5 * s.width_m >= c.girth_m - 1e-9)
+        .filter(|s| s.s_m + 0.5 * s.width_m > c.girth_m + 1e-9)
         .map(|s| s.name.as_str())
         .collect();
     if above.is_empty() {
@@ -558,7 +558,7 @@ fn chine_warning(hull: &Hull, q: &StationSensors) -> Result<Option<String>> {
         "station {} Lpp has a chine at girth {:.3} m (y {:.3} m, {:.3} m above the keel), where the contour \
          turns {:.0} deg steeper ({:.0} to {:.0} deg of deadrise): the flow can separate there, while the \
          analytic models assume it stays attached and can read several times the SPH pressure above a chine. The \
-         analytic values of the panels above it ({names}), and of the section force once the chine is \
+         analytic values of the panels that reach above it ({names}), and of the section force once the chine is \
          wetted, are attached-flow bounds; where one is a design value (SPH not converged or not \
          resolved), refine the SPH run rather than sign it",
         q.station,
