@@ -317,10 +317,15 @@ pub fn warnings(saved: &Saved) -> Vec<(String, Vec<String>)> {
     let mut out: Vec<(String, Vec<String>)> = Vec::new();
     for w in all {
         let l = w.to_lowercase();
-        let k = kinds
-            .iter()
-            .position(|(_, keys)| keys.iter().any(|key| l.contains(key)))
-            .unwrap_or(kinds.len() - 1);
+        // a convergence statement names the panel's local deadrise too: it is filed by its GCI
+        let k = if l.contains("gci") {
+            2
+        } else {
+            kinds
+                .iter()
+                .position(|(_, keys)| keys.iter().any(|key| l.contains(key)))
+                .unwrap_or(kinds.len() - 1)
+        };
         match out.iter_mut().find(|(n, _)| n == kinds[k].0) {
             Some((_, v)) => v.push(w),
             None => out.push((kinds[k].0.to_string(), vec![w])),

@@ -41,6 +41,16 @@ fn flags(d: &Value) -> Vec<String> {
             num(d, "later_load_hydrostatic").unwrap_or(0.0) / 1e3
         ));
     }
+    if let (Some(v), Some(a)) = (num(d, "value"), num(d, "analytic"))
+        && text(d, "source").starts_with("sph")
+        && a > v
+    {
+        f.push(format!(
+            "the design value is below the analytic estimate of the same event ({:.2} kPa): the rule \
+             takes the SPH value where it is converged or acceptable; the larger is the conservative choice",
+            a / 1e3
+        ));
+    }
     let mut g = flags_of_source(d);
     f.append(&mut g);
     f
@@ -209,7 +219,7 @@ fn governing_timing(saved: &Saved, f: f64, d: &Value) -> (String, Option<f64>) {
         .and_then(|x| {
             let w = x["impact_window_s"].as_array()?;
             Some(format!(
-                "{:.1}-{:.1}",
+                "{:.1} to {:.1}",
                 w.first()?.as_f64()? * 1e3,
                 w.get(1)?.as_f64()? * 1e3
             ))
@@ -500,6 +510,22 @@ mod tests {
         let f = flags(&d).join("; ");
         assert!(f.contains("no distinct impact peak"), "{f}");
         assert!(!f.contains("SPH not converged"), "{f}");
+    }
+
+    #[test]
+    fn an_acceptable_sph_value_below_the_analytic_one_is_flagged() {
+        // S174-4 of the Ochi assessment: 1.45 kPa (SPH 1.27 + U, acceptable) against 2.14 kPa analytic
+        let d = json!({"name": "S174-4", "value": 1452.96, "sph": 1266.0, "analytic": 2141.45,
+                       "source": "sph (acceptable)", "verdict": "acceptable"});
+        let f = flags(&d).join("; ");
+        assert!(
+            f.contains("below the analytic estimate of the same event (2.14 kPa)"),
+            "{f}"
+        );
+        // the analytic value governing: nothing to flag
+        let d = json!({"name": "S174-3", "value": 2630.0, "sph": 1570.0, "analytic": 2630.0,
+                       "source": "analytic (SPH not converged)", "verdict": "mismatched"});
+        assert!(!flags(&d).join("; ").contains("below the analytic"));
     }
 
     #[test]
