@@ -12,8 +12,9 @@
 //! chine reads 128 kPa analytic against 3.5 kPa in the SPH run, whose flow separates there, and D60 above
 //! it 99 kPa against a panel the SPH water never reaches; 2 cm panels read 352 kPa against 17 kPa just
 //! above the chine. Continuing the bottom with a fictitious body past the chine (Tassin et al. 2014,
-//! Applied Ocean Research 48, 33-41) is the published remedy; it is not built. These chines are found
-//! here so that the assessment can say which panels it concerns.
+//! Applied Ocean Research 48, 33-41) is the published remedy; a measured prototype and what it still
+//! needs are in `docs/numerics/chines.md`. These chines are found here so that the assessment can say
+//! which panels it concerns.
 //!
 //! A vertex is a chine when the direction of the contour turns steeper by at least [`CHINE_TURN_DEG`]
 //! while the contour still widens above it (a vertical side or tumblehome already ends the analytic
