@@ -192,24 +192,37 @@ pub fn comparison(r: &mut Report, saved: &Saved) {
         let rows: Vec<Vec<String>> = cmp
             .iter()
             .map(|c| {
+                let diff = match (c["computed"].as_f64(), c["reference"].as_f64()) {
+                    (Some(x), Some(y)) if y != 0.0 => format!("{:+.0} %", 100.0 * (x / y - 1.0)),
+                    _ => "-".into(),
+                };
                 vec![
                     show(c, "quantity"),
                     show(c, "computed"),
                     show(c, "reference"),
+                    diff,
                     show(c, "unit"),
                     show(c, "source"),
                     show(c, "note"),
                 ]
             })
             .collect();
+        r.para(
+            "The values below are set beside published computations or readings, each with its source; they \
+             carry no tolerance and no verdict, because the published values are not measurements of the \
+             same quantity (see each note). The verdicts against published data are those of the \
+             validation suite (`slamtool validate`, reports/validation), whose cases include the same \
+             hull's entry velocities and trends.",
+        );
         r.push(Block::Table {
-            caption: "Computed values beside published ones, with the source of each ('-': not \
-                      computed, the note says why)"
+            caption: "Computed values beside published ones, the difference computed / published - 1, and \
+                      the source of each ('-': not computed, the note says why)"
                 .into(),
             header: [
                 "quantity",
                 "computed",
                 "reference",
+                "difference",
                 "unit",
                 "source",
                 "note",
