@@ -211,7 +211,7 @@ pub fn comparison(r: &mut Report, saved: &Saved) {
             "The values below are set beside published computations or readings, each with its source; they \
              carry no tolerance and no verdict, because the published values are not measurements of the \
              same quantity (see each note). The verdicts against published data are those of the \
-             validation suite (`slamtool validate`, reports/validation), whose cases include the same \
+             validation suite (slamtool validate, reports/validation), whose cases include the same \
              hull's entry velocities and trends.",
         );
         r.push(Block::Table {
