@@ -123,14 +123,24 @@ pub fn verdict(within: Option<bool>, known_failure: bool) -> Verdict {
     }
 }
 
+/// `number` followed by its unit, or alone for a ratio (unit "-", or none), whose unit only the quantity
+/// column names.
+pub fn with_unit(number: &str, unit: &str) -> String {
+    if unit.is_empty() || unit == "-" {
+        number.to_string()
+    } else {
+        format!("{number} {unit}")
+    }
+}
+
 /// The tolerance as text for the summary table.
 pub fn tolerance_text(tol: Tolerance, unit: &str) -> String {
     match tol {
         Tolerance::Relative { value } => format!("±{} %", trim(value * 100.0)),
-        Tolerance::Absolute { value } => format!("±{} {unit}", trim(value)),
-        Tolerance::AtMost { value } => format!("≤ {} {unit}", trim(value)),
+        Tolerance::Absolute { value } => format!("±{}", with_unit(&trim(value), unit)),
+        Tolerance::AtMost { value } => format!("≤ {}", with_unit(&trim(value), unit)),
         Tolerance::UpperBound { value } => {
-            format!("≤ {} {unit} (one-sided bound)", trim(value))
+            format!("≤ {} (one-sided bound)", with_unit(&trim(value), unit))
         }
         Tolerance::BelowReference => "< reference".into(),
         Tolerance::WithinRange => "within range".into(),
@@ -142,7 +152,7 @@ pub fn error_text(error: Option<f64>, tol: Tolerance, unit: &str) -> String {
     match (error, tol) {
         (None, _) => "–".into(),
         (Some(e), Tolerance::Relative { .. }) => format!("{:+.1} %", e * 100.0),
-        (Some(e), _) => format!("{} {unit}", signed(e)),
+        (Some(e), _) => with_unit(&signed(e), unit),
     }
 }
 

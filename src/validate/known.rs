@@ -7,7 +7,7 @@
 //! [`Outcome::facts`]: super::Outcome::facts
 
 use super::Case;
-use super::compare::{Reference, Verdict, error_text, tolerance_text, trim};
+use super::compare::{Reference, Verdict, error_text, tolerance_text, trim, with_unit};
 use super::report::reference_text;
 
 /// The byte offset and text of the first literal number in `template` outside its placeholders: a digit
@@ -87,7 +87,7 @@ pub fn text(
 ) -> Result<String, String> {
     let unit = case.unit.as_str();
     let mut all = vec![
-        ("computed".to_string(), format!("{} {unit}", trim(computed))),
+        ("computed".to_string(), with_unit(&trim(computed), unit)),
         (
             "reference".to_string(),
             reference_text(Some(reference), unit),

@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 
 use serde::Serialize;
 
-use super::compare::{self, Reference, trim};
+use super::compare::{self, Reference, trim, with_unit};
 use super::{CaseResult, Suite, plot};
 use crate::error::Result;
 use crate::files::write_text_atomic;
@@ -29,12 +29,10 @@ pub struct SummaryRow {
 pub fn reference_text(r: Option<&Reference>, unit: &str) -> String {
     match r {
         None => "–".into(),
-        Some(Reference::Value { value }) => format!("{} {unit}", trim(*value)),
-        Some(Reference::Range { lower, upper }) if lower == upper => {
-            format!("{} {unit}", trim(*lower))
-        }
+        Some(Reference::Value { value }) => with_unit(&trim(*value), unit),
+        Some(Reference::Range { lower, upper }) if lower == upper => with_unit(&trim(*lower), unit),
         Some(Reference::Range { lower, upper }) => {
-            format!("{} – {} {unit}", trim(*lower), trim(*upper))
+            with_unit(&format!("{} – {}", trim(*lower), trim(*upper)), unit)
         }
         Some(Reference::Pending { .. }) => "pending data".into(),
     }
@@ -42,28 +40,18 @@ pub fn reference_text(r: Option<&Reference>, unit: &str) -> String {
 
 /// The summary row of a case.
 pub fn summary_row(c: &CaseResult) -> SummaryRow {
-    // A ratio's unit "-" is named in the quantity column only, not after every number.
-    let unit = if c.unit == "-" { "" } else { c.unit.as_str() };
     SummaryRow {
         case: c.name.clone(),
         quantity: format!("{} ({})", c.quantity, c.unit),
         computed: c
             .computed
             .filter(|x| x.is_finite())
-            .map_or("–".into(), |x| tidy(format!("{} {unit}", trim(x)))),
-        reference: tidy(reference_text(c.reference.as_ref(), unit)),
-        error: tidy(compare::error_text(c.error, c.tolerance, unit)),
-        tolerance: tidy(compare::tolerance_text(c.tolerance, unit)),
+            .map_or("–".into(), |x| with_unit(&trim(x), &c.unit)),
+        reference: reference_text(c.reference.as_ref(), &c.unit),
+        error: compare::error_text(c.error, c.tolerance, &c.unit),
+        tolerance: compare::tolerance_text(c.tolerance, &c.unit),
         verdict: c.verdict.label().into(),
     }
-}
-
-/// A cell without the double or trailing space an empty unit leaves.
-fn tidy(s: String) -> String {
-    s.split(' ')
-        .filter(|w| !w.is_empty())
-        .collect::<Vec<_>>()
-        .join(" ")
 }
 
 /// One row per case.
@@ -332,13 +320,23 @@ mod tests {
     use super::*;
 
     #[test]
-    fn an_empty_unit_leaves_no_double_or_trailing_space() {
-        assert_eq!(tidy(format!("{} {}", "1.983", "")), "1.983");
+    fn a_ratio_s_cells_carry_no_unit_and_no_stray_space() {
+        use crate::validate::compare::{Tolerance, error_text, tolerance_text};
+        assert_eq!(with_unit("1.983", "-"), "1.983");
+        assert_eq!(with_unit("1.983", ""), "1.983");
+        assert_eq!(with_unit("3.4", "kPa"), "3.4 kPa");
         assert_eq!(
-            tidy(format!("≤ {} {} (one-sided bound)", "1", "")),
+            tolerance_text(Tolerance::UpperBound { value: 1.0 }, "-"),
             "≤ 1 (one-sided bound)"
         );
-        assert_eq!(tidy(format!("{} – {} {}", "0.4", "1", "")), "0.4 – 1");
-        assert_eq!(tidy("+4.1 %".to_string()), "+4.1 %");
+        let range = Reference::Range {
+            lower: 0.4,
+            upper: 1.0,
+        };
+        assert_eq!(reference_text(Some(&range), "-"), "0.4 – 1");
+        assert_eq!(
+            error_text(Some(0.041), Tolerance::Relative { value: 0.15 }, "-"),
+            "+4.1 %"
+        );
     }
 }
