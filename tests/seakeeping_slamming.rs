@@ -66,17 +66,28 @@ fn long_waves_are_followed() {
     );
 }
 
-#[test]
-fn keel_entry_instant_and_profile() {
-    let we = 2.0;
-    let rm = RelativeMotion {
+/// A relative motion of unit amplitude and phase 0.4 rad whose velocity is its time derivative ds/dt at
+/// the encounter frequency `we` (no forward-speed terms).
+fn sinusoid(we: f64) -> RelativeMotion {
+    RelativeMotion {
         x: 1.0,
         motion: Complex::from_polar(1.0, 0.4),
         velocity: Complex::new(0.0, we) * Complex::from_polar(1.0, 0.4),
-    };
+    }
+}
+
+/// s(t) of `rm` in a wave of amplitude `zeta_a`.
+fn motion_at(rm: &RelativeMotion, we: f64, zeta_a: f64, t: f64) -> f64 {
+    (rm.motion * Complex::new(0.0, we * t).exp()).re * zeta_a
+}
+
+#[test]
+fn keel_entry_instant_and_profile() {
+    let we = 2.0;
+    let rm = sinusoid(we);
     let (zeta_a, draft) = (0.5, 0.2);
     let e = relative_motion::keel_entry(&rm, we, zeta_a, draft, 10.0, 50).unwrap();
-    let s = |t: f64| (rm.motion * Complex::new(0.0, we * t).exp()).re * zeta_a;
+    let s = |t: f64| motion_at(&rm, we, zeta_a, t);
     assert!(
         (s(e.t_entry) - draft).abs() < 1e-9,
         "s at entry {}",
@@ -99,14 +110,10 @@ fn keel_entry_instant_and_profile() {
 fn keel_entry_of_a_dry_station_is_the_water_reaching_its_keel() {
     // keel 0.2 m above the calm water (draft -0.2): s falls through -0.2 where cos(w t + 0.4) = -0.4
     let we = 2.0;
-    let rm = RelativeMotion {
-        x: 1.0,
-        motion: Complex::from_polar(1.0, 0.4),
-        velocity: Complex::new(0.0, we) * Complex::from_polar(1.0, 0.4),
-    };
+    let rm = sinusoid(we);
     let (zeta_a, draft) = (0.5, -0.2);
     let e = relative_motion::keel_entry(&rm, we, zeta_a, draft, 10.0, 50).unwrap();
-    let s = |t: f64| (rm.motion * Complex::new(0.0, we * t).exp()).re * zeta_a;
+    let s = |t: f64| motion_at(&rm, we, zeta_a, t);
     assert!((s(e.t_entry) - draft).abs() < 1e-9, "{}", s(e.t_entry));
     assert!(s(e.t_entry + 1e-4) < draft, "the water rises past the keel");
     // V = w sqrt(amp^2 - T^2) at the crossing, the same as for a keel 0.2 m deep

@@ -359,12 +359,14 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
         Some(AirChoice::Auto) => Some("auto"),
         _ => None,
     };
-    for &f in &at {
+    // `sensors` holds one entry per station of `at`, in its order
+    for (&f, q) in at.iter().zip(&sensors) {
         let points = &hull.section_at(hull.station_x(f))?.points;
         warnings.extend(match air {
             Some(choice) => impact::air_cushion_statement(f, points, choice),
             None => impact::air_cushion_warning(f, points),
         });
+        warnings.extend(chine_warning(points, q));
     }
     for st in stations.iter().filter(|st| st.draft <= 0.0) {
         warnings.push(format!(
@@ -376,9 +378,6 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
             -st.draft,
             loading.name
         ));
-    }
-    for q in &sensors {
-        warnings.extend(chine_warning(hull, q)?);
     }
     for q in sensors.iter().filter(|q| q.default) {
         let first = q.sensors.first().map_or("", |s| s.name.as_str());
@@ -530,11 +529,8 @@ fn flare_event(
 
 /// The warning of a station whose panels reach above a chine (the first one up the contour,
 /// [`super::chines`]): their analytic estimates assume attached flow past it. None without such panels.
-fn chine_warning(hull: &Hull, q: &StationSensors) -> Result<Option<String>> {
-    let points = &hull.section_at(q.x)?.points;
-    let Some(c) = super::chines::chines(points).into_iter().next() else {
-        return Ok(None);
-    };
+fn chine_warning(points: &[[f64; 2]], q: &StationSensors) -> Option<String> {
+    let c = super::chines::chines(points).into_iter().next()?;
     let above: Vec<&str> = q
         .sensors
         .iter()
@@ -542,7 +538,7 @@ fn chine_warning(hull: &Hull, q: &StationSensors) -> Result<Option<String>> {
         .map(|s| s.name.as_str())
         .collect();
     if above.is_empty() {
-        return Ok(None);
+        return None;
     }
     let names = if above.len() > 6 {
         format!(
@@ -554,7 +550,7 @@ fn chine_warning(hull: &Hull, q: &StationSensors) -> Result<Option<String>> {
     } else {
         above.join(", ")
     };
-    Ok(Some(format!(
+    Some(format!(
         "station {} Lpp has a chine at girth {:.3} m (y {:.3} m, {:.3} m above the keel), where the contour \
          turns {:.0} deg steeper ({:.0} to {:.0} deg of deadrise): the flow can separate there, while the \
          analytic models assume it stays attached and can read several times the SPH pressure above a chine. The \
@@ -568,5 +564,5 @@ fn chine_warning(hull: &Hull, q: &StationSensors) -> Result<Option<String>> {
         c.turn_deg(),
         c.deadrise_below_deg,
         c.deadrise_above_deg
-    )))
+    ))
 }

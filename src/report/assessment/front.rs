@@ -319,7 +319,10 @@ pub fn warnings(saved: &Saved) -> Vec<(String, Vec<String>)> {
         let l = w.to_lowercase();
         // a convergence statement names the panel's local deadrise too: it is filed by its GCI
         let k = if l.contains("gci") {
-            2
+            kinds
+                .iter()
+                .position(|(n, _)| *n == "Resolution and convergence")
+                .unwrap_or(kinds.len() - 1)
         } else {
             kinds
                 .iter()
