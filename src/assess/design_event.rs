@@ -42,7 +42,10 @@ pub struct DesignEvent {
     pub expected_slams: f64,
     pub risk_level: Option<f64>,
     pub threshold_velocity_m_per_s: f64,
+    /// The entry velocity, the keel-slope term included when it is on.
     pub design_entry_velocity_m_per_s: f64,
+    /// The keel-slope term U dz_k/dx in the entry velocity (m/s; 0 when it is off).
+    pub keel_slope_velocity_m_per_s: f64,
     /// The profile: a regular head wave at the spectral peak period, with this amplitude.
     pub peak_period_s: f64,
     pub equivalent_wave_amplitude_m: f64,
@@ -56,10 +59,7 @@ pub fn design_velocity(st: &SlamStatistics, exposure_h: f64, basis: Basis) -> Op
     }
     let v = match basis {
         Basis::MostProbableLargest => st.most_probable_extreme_velocity(n),
-        Basis::RiskLevel(a) => {
-            let q = 1.0 - (1.0 - a).powf(1.0 / n);
-            (st.threshold_velocity.powi(2) - 2.0 * st.m2 * q.ln()).sqrt()
-        }
+        Basis::RiskLevel(a) => st.velocity_exceeded_with(1.0 - (1.0 - a).powf(1.0 / n)),
     };
     Some((v, n))
 }
@@ -183,8 +183,14 @@ pub(crate) fn plan_events(
                     continue;
                 };
                 let rm = at_station(&r, st.x, 1.0)?;
-                let Some((zeta, k)) = scaled_entry(&rm, r.omega_e, st.draft, st.height, v, 41)
-                else {
+                // The regular wave gives the oscillating part; the keel-slope term (0 when off) is added
+                // to the profile after it.
+                let v_s = stats.steady_velocity;
+                let scaled = scaled_entry(&rm, r.omega_e, st.draft, st.height, v - v_s, 41);
+                let Some((zeta, k)) = scaled.map(|(z, mut k)| {
+                    k.add_steady_velocity(v_s);
+                    (z, k)
+                }) else {
                     notes.push(format!(
                         "no design event at station {} Lpp, {:.3} m/s, sea {}: no regular wave at the spectral \
                          peak period gives the design entry velocity {v:.3} m/s",
@@ -210,6 +216,7 @@ pub(crate) fn plan_events(
                     },
                     threshold_velocity_m_per_s: stats.threshold_velocity,
                     design_entry_velocity_m_per_s: v,
+                    keel_slope_velocity_m_per_s: v_s,
                     peak_period_s: tp,
                     equivalent_wave_amplitude_m: zeta,
                 };
@@ -274,6 +281,7 @@ mod tests {
             threshold_velocity: 0.5,
             probability: 0.1,
             slams_per_hour: rate,
+            steady_velocity: 0.0,
         }
     }
 

@@ -596,6 +596,7 @@ pub fn run(
         "convergence_levels": s.study.levels,
         "convergence_ratio": s.study.ratio,
         "strips": s.strips,
+        "keel_slope_term": s.keel_slope_term,
         "measured_forcing": s
             .forcing
             .iter()

@@ -28,6 +28,7 @@ pub mod design_event;
 pub mod design_rule;
 pub mod diff;
 pub mod execute;
+pub mod keel_slope;
 pub mod limits;
 pub mod measured;
 pub mod plan;

@@ -77,6 +77,9 @@ pub struct Settings {
     /// Measured relative-motion records of stations, which replace strip theory there
     /// ([`super::measured`]).
     pub forcing: Vec<super::measured::StationRecord>,
+    /// Add the keel-slope term U dz_k/dx of the 2D+t plane to the keel-entry velocities of strip theory
+    /// ([`super::keel_slope`]); off by default, as in Veen (2010).
+    pub keel_slope_term: bool,
 }
 
 impl Default for Settings {
@@ -97,6 +100,7 @@ impl Default for Settings {
             design_basis: super::design_event::Basis::MostProbableLargest,
             warnings: Vec::new(),
             forcing: Vec::new(),
+            keel_slope_term: false,
         }
     }
 }
@@ -303,6 +307,7 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
         }
     }
     let mut req = Request::for_sea(sea, speeds.clone(), stations.clone());
+    req.keel_slope_term = s.keel_slope_term;
     // RAOs at lambda/L = 0.5, 0.6, .., 3.0 for the report (strip theory only, no water entry).
     req.lambda_over_l = (5..=30).map(|k| f64::from(k) / 10.0).collect();
     let motions = analysis::run(&model, &req)?;
@@ -379,6 +384,11 @@ pub fn plan(hull: &Hull, sea: &SeaState, s: &Settings) -> Result<Plan> {
             loading.name
         ));
     }
+    warnings.extend(super::keel_slope::lines(
+        &stations,
+        &events,
+        s.keel_slope_term,
+    ));
     for q in sensors.iter().filter(|q| q.default) {
         let first = q.sensors.first().map_or("", |s| s.name.as_str());
         let rule = if first.starts_with('D') {

@@ -95,6 +95,11 @@ pub struct AssessArgs {
     /// of the exposure exceeds with probability alpha [default: the most probable largest in N slams].
     #[arg(long, value_name = "ALPHA")]
     risk_level: Option<f64>,
+    /// Add the keel-slope term U dz_k/dx to the keel-entry velocities: the sinking of a section whose keel
+    /// rises towards the bow through the earth-fixed plane of the 2D+t method (off by default, as in Veen
+    /// 2010; without it a warning names the stations where it is 5 % or more of an entry velocity).
+    #[arg(long)]
+    keel_slope_term: bool,
     /// Design gate: every sensor design pressure above this (kPa) is a violation (exit status 4).
     #[arg(long, value_name = "P")]
     max_pressure_kpa: Option<f64>,
@@ -253,6 +258,7 @@ pub fn run(a: AssessArgs) -> Result<()> {
                 assess::design_event::Basis::RiskLevel(r)
             }),
         threads: a.threads.map(usize::from),
+        keel_slope_term: a.keel_slope_term,
         max_wall_s: (!a.force).then_some(slamtool::sph::cost::MAX_WALL_S),
         ..Settings::default()
     };

@@ -11,8 +11,8 @@
 //! A dry station, whose keel is at or above the loading's calm waterline (a forefoot under a raked stem, a
 //! keel rising to the bow), has no girth below the waterline, and a nearly dry one (g_wl below a quarter
 //! of the keel-to-deck girth, [`SHALLOW_FRACTION`]) would get hundreds of panels a few centimetres wide;
-//! their panels divide the girth g_d from the keel to the deck edge in the same way, every 5 % of g_d, and are named `D05`, `D10`, ..., `D95` (the last
-//! panel that lies whole on the contour).
+//! their panels divide the girth g_d from the keel to the deck edge in the same way, every 5 % of g_d,
+//! and are named `D05`, `D10`, ..., `D95` (the last panel that lies whole on the contour).
 
 use crate::error::{Error, Result};
 use crate::hull::{Hull, LoadingCondition};

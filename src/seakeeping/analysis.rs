@@ -70,7 +70,8 @@ pub struct Request {
     pub stations: Vec<Station>,
     pub swell_up: f64,
     /// Add the keel-slope term U dz_k/dx (each station's `keel_slope`) to the downward velocity of the
-    /// keel-entry profiles ([`RegularStation::add_steady_velocity`]); off by default.
+    /// keel-entry profiles ([`RegularStation::add_steady_velocity`]) and of the irregular seas' slams
+    /// ([`slamming::SlamStatistics::with_steady_velocity`]); off by default.
     pub keel_slope_term: bool,
     pub slam_probability_limit: f64,
     pub method: SectionMethod,
@@ -177,13 +178,14 @@ impl RegularStation {
     }
 
     /// Add a steady downward velocity `v` (m/s; the keel-slope term U dz_k/dx) to the keel-entry velocity
-    /// and its profile. The instant of entry and the end of the profile stay those of the oscillating
-    /// part (the steady sinking of the section in the earth-fixed plane is not added to the penetration).
+    /// and its profile ([`relative_motion::KeelEntry::add_steady_velocity`]). A station whose total entry
+    /// velocity is not downward (a keel that falls towards the bow, faster than the water rises onto it)
+    /// has no keel entry.
     pub fn add_steady_velocity(&mut self, v: f64) {
         if let Some(k) = self.keel_entry.as_mut() {
-            k.entry_velocity += v;
-            for p in &mut k.samples {
-                p.velocity += v;
+            k.add_steady_velocity(v);
+            if k.entry_velocity <= 0.0 {
+                self.keel_entry = None;
             }
         }
     }
@@ -359,7 +361,12 @@ pub fn run(model: &ShipModel, req: &Request) -> Result<Report> {
             let xs: Vec<f64> = pts.iter().map(|p| p.0).collect();
             let responses =
                 slamming::response_spectra(model, spec, u, &xs, req.swell_up, sections)?;
-            let stats = slamming::statistics_from_spectra(model, &responses, &pts);
+            let mut stats = slamming::statistics_from_spectra(model, &responses, &pts);
+            if req.keel_slope_term {
+                for (st, s) in stats.iter_mut().zip(&req.stations) {
+                    *st = st.with_steady_velocity(u * s.keel_slope);
+                }
+            }
             let duration_h = sea.duration_h.unwrap_or(1.0);
             let extreme = stats
                 .iter()

@@ -144,6 +144,20 @@ pub struct KeelEntry {
     pub samples: Vec<EntrySample>,
 }
 
+impl KeelEntry {
+    /// Add a steady downward velocity `v` (m/s) to the entry velocity and the whole profile: the keel-slope
+    /// term U dz_k/dx of the 2D+t plane ([`super::entry_definitions`]), in which the section also sinks by
+    /// v t. The instant of entry and the profile's times stay those of the oscillating part (the water
+    /// reaches the keel when the relative motion falls through the draft, as without the term).
+    pub fn add_steady_velocity(&mut self, v: f64) {
+        self.entry_velocity += v;
+        for p in &mut self.samples {
+            p.velocity += v;
+            p.penetration += v * p.t;
+        }
+    }
+}
+
 /// `n` samples of the downward relative velocity V(t) and the keel depth T - s(t) of a station of local
 /// draft `draft` in a regular wave of amplitude `zeta_a`, from `t_start` (times counted from it) until V
 /// reverses or the keel is `max_depth` deep, within half an encounter period at the most. With

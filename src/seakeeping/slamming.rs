@@ -87,12 +87,57 @@ pub struct SlamStatistics {
     #[serde(rename = "slam_probability")]
     pub probability: f64,
     pub slams_per_hour: f64,
+    /// Steady downward velocity added to the oscillating relative velocity at keel entry (m/s): the
+    /// keel-slope term U dz_k/dx when it is on ([`SlamStatistics::with_steady_velocity`]), else 0.
+    #[serde(rename = "keel_slope_velocity_m_per_s")]
+    pub steady_velocity: f64,
 }
 
 impl SlamStatistics {
-    /// Most probable largest entry velocity in `n` slams (m/s).
+    /// The threshold the oscillating part of the entry velocity has to exceed for a slam (m/s):
+    /// max(v_th - V_s, 0) with the steady velocity V_s.
+    pub fn oscillating_threshold(&self) -> f64 {
+        (self.threshold_velocity - self.steady_velocity).max(0.0)
+    }
+
+    /// Most probable largest entry velocity in `n` slams (m/s): sqrt(v'^2 + 2 m2 ln n) + V_s with the
+    /// oscillating threshold v' ([`SlamStatistics::oscillating_threshold`]).
     pub fn most_probable_extreme_velocity(&self, n: f64) -> f64 {
-        (self.threshold_velocity.powi(2) + 2.0 * self.m2 * n.max(1.0).ln()).sqrt()
+        (self.oscillating_threshold().powi(2) + 2.0 * self.m2 * n.max(1.0).ln()).sqrt()
+            + self.steady_velocity
+    }
+
+    /// The entry velocity a slam exceeds with probability `q` (0 < q <= 1; m/s): sqrt(v'^2 - 2 m2 ln q) +
+    /// V_s, from the Rayleigh tail P(v > u | slam) = exp(-(u^2 - v'^2) / (2 m2)) of the oscillating part.
+    pub fn velocity_exceeded_with(&self, q: f64) -> f64 {
+        (self.oscillating_threshold().powi(2) - 2.0 * self.m2 * q.ln()).sqrt()
+            + self.steady_velocity
+    }
+
+    /// The statistics with a steady downward velocity `v_s` (m/s; the keel-slope term U dz_k/dx of the
+    /// 2D+t plane) added to the oscillating relative velocity at every keel entry. A slam is an entry whose
+    /// total velocity v + V_s exceeds v_th, so the oscillating part's threshold becomes v' = max(v_th -
+    /// V_s, 0) in Ochi's probability: P = exp(-T^2/(2 m0) - v'^2/(2 m2)). Entries are still the relative
+    /// motion's up-crossings of the draft (the steady sinking does not change when the water reaches
+    /// the keel), so the rate of entries is unchanged.
+    pub fn with_steady_velocity(self, v_s: f64) -> Self {
+        let shifted = Self {
+            steady_velocity: v_s,
+            ..self
+        };
+        let base = ochi(
+            self.x,
+            self.speed,
+            self.draft,
+            self.m0,
+            self.m2,
+            shifted.oscillating_threshold(),
+        );
+        Self {
+            probability: base.probability,
+            slams_per_hour: base.slams_per_hour,
+            ..shifted
+        }
     }
 }
 
@@ -116,6 +161,7 @@ pub fn ochi(x: f64, speed: f64, draft: f64, m0: f64, m2: f64, v_th: f64) -> Slam
         threshold_velocity: v_th,
         probability,
         slams_per_hour: rate,
+        steady_velocity: 0.0,
     }
 }
 
@@ -278,4 +324,55 @@ pub fn operability_limit(
         max_probability: max_probability.to_vec(),
         limit_speed,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn stats() -> SlamStatistics {
+        // T = 0.3 m, m0 = 0.09 m^2, m2 = 0.36 m^2/s^2, v_th = 0.9 m/s
+        ochi(5.0, 8.0, 0.3, 0.09, 0.36, 0.9)
+    }
+
+    #[test]
+    fn no_steady_velocity_changes_nothing() {
+        let a = stats();
+        let b = a.with_steady_velocity(0.0);
+        assert_eq!(a.probability, b.probability);
+        assert_eq!(a.slams_per_hour, b.slams_per_hour);
+        assert_eq!(
+            a.most_probable_extreme_velocity(20.0),
+            b.most_probable_extreme_velocity(20.0)
+        );
+    }
+
+    #[test]
+    fn a_steady_velocity_lowers_the_oscillating_threshold_and_adds_to_every_slam() {
+        let a = stats();
+        // V_s = 0.4 m/s: the oscillating part has to exceed 0.5 m/s.
+        let b = a.with_steady_velocity(0.4);
+        let p = (-0.09f64 / 0.18 - 0.25 / 0.72).exp();
+        assert!((b.probability - p).abs() < 1e-15, "{}", b.probability);
+        assert!((b.slams_per_hour / b.probability - a.slams_per_hour / a.probability).abs() < 1e-9);
+        assert_eq!(b.threshold_velocity, 0.9);
+        let v = (0.25f64 + 0.72 * 20f64.ln()).sqrt() + 0.4;
+        assert!((b.most_probable_extreme_velocity(20.0) - v).abs() < 1e-12);
+        let q = 0.1f64;
+        let v = (0.25 - 0.72 * q.ln()).sqrt() + 0.4;
+        assert!((b.velocity_exceeded_with(q) - v).abs() < 1e-12);
+        // A steady velocity above v_th makes every keel entry a slam ...
+        let c = a.with_steady_velocity(1.2);
+        assert!((c.probability - (-0.5f64).exp()).abs() < 1e-15);
+        // ... and the most probable largest of the N' = N e^{v_th^2/(2 m2)} entries is the oscillating
+        // part's largest over all entries plus V_s: the same oscillating part as without it, for the
+        // same exposure.
+        let n = 20.0;
+        let n_all = n * c.slams_per_hour / a.slams_per_hour;
+        assert!(
+            (c.most_probable_extreme_velocity(n_all) - 1.2 - a.most_probable_extreme_velocity(n))
+                .abs()
+                < 1e-12
+        );
+    }
 }

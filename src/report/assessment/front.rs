@@ -295,8 +295,10 @@ pub fn warnings(saved: &Saved) -> Vec<(String, Vec<String>)> {
         .collect();
     let mut seen = std::collections::BTreeSet::new();
     all.retain(|w| seen.insert(w.clone()));
-    let kinds: [(&str, &[&str]); 5] = [
+    let kinds: [(&str, &[&str]); 7] = [
         ("Failed runs", &["failed", "stopped early"]),
+        ("Entry velocities", &["keel-slope"]),
+        ("Chines", &["has a chine"]),
         (
             "Air cushion / low deadrise",
             &["air", "cushion", "single-phase", "deadrise"],

@@ -232,6 +232,42 @@ fn governing_timing(saved: &Saved, f: f64, d: &Value) -> (String, Option<f64>) {
     (window, analytic)
 }
 
+/// What the entry velocities contain of the keel-slope term U dz_k/dx (`assess::keel_slope`): a paragraph
+/// when it is on, and when it is off but a station's warning says it would be 5 % or more of an entry
+/// velocity there.
+fn keel_slope_paragraph(r: &mut Report, s: &serde_json::Value) {
+    let on = s["settings"]["keel_slope_term"].as_bool() == Some(true);
+    let left_out: Vec<&str> = list(s, "warnings")
+        .iter()
+        .filter_map(|w| w.as_str())
+        .filter(|w| w.contains("--keel-slope-term adds it"))
+        .filter_map(|w| w.split(':').next())
+        .map(|w| w.trim_start_matches("station ").trim_end_matches(" Lpp"))
+        .collect();
+    if on {
+        r.para(
+            "Entry velocities: this assessment adds the keel-slope term U dz_k/dx to every keel entry of \
+             strip theory, the sinking of a section whose keel is not parallel to the calm waterline through \
+             the earth-fixed plane of the 2D+t method (--keel-slope-term; Veen 2010 leaves it out). The \
+             stations' lines under Warnings give the amount. Flare events and measured records do not \
+             include it.",
+        );
+    } else if !left_out.is_empty() {
+        r.para(&format!(
+            "Entry velocities: the keel-slope term U dz_k/dx is left out, as in Veen (2010), but at {} {} \
+             Lpp it would change a keel-entry velocity by 5 % or more (see Warnings). The design values there are \
+             off by roughly twice that share, low where the keel rises towards the bow: assess with \
+             --keel-slope-term before signing them.",
+            if left_out.len() == 1 {
+                "station"
+            } else {
+                "stations"
+            },
+            left_out.join(", ")
+        ));
+    }
+}
+
 pub fn page(r: &mut Report, saved: &Saved) {
     r.heading(1, "Sign-off: design slamming loads");
     let s = &saved.summary;
@@ -275,6 +311,7 @@ pub fn page(r: &mut Report, saved: &Saved) {
              two-phase model's validation is incomplete (docs/guide/air.md)."
         ));
     }
+    keel_slope_paragraph(r, s);
     if list(s, "irregular").is_empty() {
         r.para(
             "No irregular sea in this assessment: the design values below are those of the regular waves \
