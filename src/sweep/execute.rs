@@ -107,7 +107,11 @@ fn analytic_case(
     let mut events = Vec::new();
     for &u in &cs.speeds {
         for e in vm.events(&v.hull, u, &cs.regular)? {
-            let est = e.entry.as_ref().map(assess::analytic::estimate);
+            // in the loading's water, as `assess` does (sea water 1025 kg/m3 for most hulls)
+            let est = e
+                .entry
+                .as_ref()
+                .map(|c| assess::analytic::estimate_in(c, v.loading.rho));
             let mut warnings = Vec::new();
             let analytic = match est {
                 Some(Ok(a)) => {
@@ -213,6 +217,7 @@ fn assess_case(p: &Prepared, i: usize, out: &Path, threads: Option<usize>) -> Re
             ..StudyPlan::default()
         },
         strips: p.common.strips,
+        keel_slope_term: p.common.keel_slope_term,
         use_cache: true,
         // The variants share one cache: each would otherwise walk the others' entries for a silent note.
         unused_cache: assess::cache::Unused::Ignore,
@@ -316,7 +321,13 @@ pub fn run(p: &Prepared, opts: &Options, progress: &ProgressHandle) -> Result<Sw
                 .map(|&k| {
                     let v = &p.variants[k];
                     let vm = match strips.iter().find(|s| s.0 == v.model).map(|s| &s.1) {
-                        Some(Ok(sm)) => VariantModel::new(sm, &v.hull, &v.loading, &p.stations),
+                        Some(Ok(sm)) => VariantModel::new(
+                            sm,
+                            &v.hull,
+                            &v.loading,
+                            &p.stations,
+                            p.common.keel_slope_term,
+                        ),
                         Some(Err(e)) => Err(Error::Numerical(e.to_string())),
                         None => Err(Error::Invalid("no strip theory for this variant".into())),
                     };
@@ -408,6 +419,7 @@ pub fn assemble(p: &Prepared, shard: Option<Shard>, cases: Vec<CaseResult>) -> R
         "fidelity": p.common.fidelity.name(),
         "resolution": p.common.resolution,
         "air": p.common.air,
+        "keel_slope_term": p.common.keel_slope_term,
         "convergence_levels": p.common.convergence_levels,
         "strips": p.common.strips,
         "bow_region": p.common.region,

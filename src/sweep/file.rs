@@ -207,6 +207,7 @@ pub struct SweepRaw {
     pub fidelity: Option<Spanned<String>>,
     pub resolution: Option<Spanned<String>>,
     pub air: Option<Spanned<String>>,
+    pub keel_slope_term: Option<Spanned<bool>>,
     pub convergence_levels: Option<Spanned<i64>>,
     pub strips: Option<Spanned<i64>>,
     pub bow_region: Option<Spanned<RegionRaw>>,
@@ -276,6 +277,9 @@ pub struct Common {
     pub resolution: Level,
     /// Air as a second phase in the SPH runs (`air = "off" | "on" | "auto"`; default off).
     pub air: AirChoice,
+    /// Add the keel-slope term U dz_k/dx to the keel-entry velocities (`keel_slope_term = true`, as
+    /// `assess --keel-slope-term`; default false).
+    pub keel_slope_term: bool,
     pub convergence_levels: usize,
     pub strips: usize,
     pub region: Option<BowRegion>,
@@ -450,6 +454,7 @@ impl SweepFile {
             fidelity,
             resolution,
             air,
+            keel_slope_term: r.keel_slope_term.as_ref().is_some_and(|b| *b.get_ref()),
             convergence_levels,
             strips,
             region,

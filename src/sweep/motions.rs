@@ -95,15 +95,19 @@ pub struct VariantModel<'a> {
     pub stations: Vec<Station>,
     /// The sensors of each station: the hull's, or the default panels where it has none (as `assess`).
     pub sensors: Vec<Vec<crate::sph::sensors::SensorSpec>>,
+    /// Add the keel-slope term U dz_k/dx to the keel entries and slams (`assess::keel_slope`).
+    pub keel_slope_term: bool,
 }
 
 impl<'a> VariantModel<'a> {
-    /// The seakeeping stations of `hull` in `loading` at `at` (fractions of Lpp aft of the FP).
+    /// The seakeeping stations of `hull` in `loading` at `at` (fractions of Lpp aft of the FP), with or
+    /// without the keel-slope term.
     pub fn new(
         strip: &'a StripModel,
         hull: &Hull,
         loading: &LoadingCondition,
         at: &[f64],
+        keel_slope_term: bool,
     ) -> Result<Self> {
         let stations = at
             .iter()
@@ -124,6 +128,7 @@ impl<'a> VariantModel<'a> {
             strip,
             stations,
             sensors,
+            keel_slope_term,
         })
     }
 
@@ -135,7 +140,10 @@ impl<'a> VariantModel<'a> {
             let za = w.amplitude();
             for (s, sensors) in self.stations.iter().zip(&self.sensors) {
                 let rm = relative_motion::at_station(&r, s.x, 1.0)?;
-                let st = RegularStation::new(s, rm, r.omega_e, za, PROFILE_SAMPLES);
+                let mut st = RegularStation::new(s, rm, r.omega_e, za, PROFILE_SAMPLES);
+                if self.keel_slope_term {
+                    st.add_steady_velocity(speed * s.keel_slope);
+                }
                 events.push(plan::station_event(
                     &st,
                     &plan::Wave {
@@ -167,10 +175,14 @@ impl<'a> VariantModel<'a> {
             1.0,
             &self.strip.table,
         )?;
-        Ok(slamming::statistics_from_spectra(
-            &self.strip.model,
-            &responses,
-            &pts,
-        ))
+        let stats = slamming::statistics_from_spectra(&self.strip.model, &responses, &pts);
+        Ok(stats
+            .into_iter()
+            .zip(&self.stations)
+            .map(|(st, s)| match self.keel_slope_term {
+                true => st.with_steady_velocity(speed * s.keel_slope),
+                false => st,
+            })
+            .collect())
     }
 }

@@ -410,7 +410,8 @@ pub fn prepare(path: &Path, out: &Path) -> Result<Prepared> {
     let settings = serde_json::json!({
         "loading": loading.name, "stations": stations, "fidelity": common.fidelity.name(),
         "resolution": common.resolution, "convergence_levels": common.convergence_levels,
-        "strips": common.strips, "region": common.region,
+        "strips": common.strips, "region": common.region, "air": common.air,
+        "keel_slope_term": common.keel_slope_term,
     });
     let case_keys = cases
         .iter()
