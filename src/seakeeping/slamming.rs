@@ -9,8 +9,11 @@
 //!
 //! (Ochi 1964, as given in ../reference/water_entry_theory.md). Given a slam, the entry velocity is Rayleigh
 //! distributed above v_th: P(V > v | slam) = exp(-(v^2 - v_th^2)/(2 m2)), so the most probable largest of
-//! N slams is sqrt(v_th^2 + 2 m2 ln N). The operability limit is the highest speed at which the slam
-//! probability stays below a limit (3 % per encounter by default, ship-handling practice).
+//! N slams is sqrt(v_th^2 + 2 m2 ln N). With the keel-slope term of the 2D+t plane, a steady velocity V_s
+//! added to every keel entry, the oscillating part's threshold is max(v_th - V_s, 0) and every slam's
+//! velocity is V_s more ([`SlamStatistics::with_steady_velocity`]). The operability limit is the highest
+//! speed at which the slam probability stays below a limit (3 % per encounter by default, ship-handling
+//! practice).
 
 use super::ShipModel;
 use super::relative_motion;
