@@ -95,6 +95,33 @@ const WIDE_TABLE_CHARS: usize = 110;
 /// Characters in the widest cell of a text column above which it may take the remaining width.
 const WIDE_TEXT_CHARS: usize = 40;
 
+/// Characters of a wide table's columns (narrow columns at their widest cell, headers wrapped; text
+/// columns at [`LEAST_TEXT_CHARS`]), summed, above which it does not fit the portrait text width at
+/// 7.2 pt: it gets a landscape page of its own.
+const PORTRAIT_TABLE_CHARS: usize = 120;
+
+/// The least width, in characters, a wrapping text column of a wide table is given room for.
+const LEAST_TEXT_CHARS: usize = 30;
+
+/// Characters a header line of a landscape table holds (a longer word keeps its own line).
+const HEADER_LINE_CHARS: usize = 12;
+
+/// `h` broken into lines of at most [`HEADER_LINE_CHARS`] characters at its spaces (a longer word on a
+/// line of its own), so that a narrow column's header wraps instead of widening the column.
+fn wrap_header(h: &str) -> String {
+    let mut lines: Vec<String> = Vec::new();
+    for word in h.split_whitespace() {
+        match lines.last_mut() {
+            Some(l) if l.chars().count() + 1 + word.chars().count() <= HEADER_LINE_CHARS => {
+                l.push(' ');
+                l.push_str(word);
+            }
+            _ => lines.push(word.to_string()),
+        }
+    }
+    lines.join("\n")
+}
+
 /// The typst preamble: A4, margins, the bundled font, numbered headings, table style.
 const PREAMBLE: &str = r#"#set document(date: none)
 #set page(paper: "a4", margin: (x: 20mm, top: 20mm, bottom: 22mm))
@@ -204,8 +231,39 @@ fn block_source(b: &Block, s: &mut String, files: &mut Vec<(String, Vec<u8>)>) {
                     if numeric { "right" } else { "left" }
                 })
                 .collect();
+            // The widest cell of column j in characters, its header counted whole or wrapped.
+            let widest = |j: usize, wrapped: bool| {
+                let body = rows
+                    .iter()
+                    .map(|r| r.get(j).map_or(0, |c| c.chars().count()))
+                    .max()
+                    .unwrap_or(0);
+                let head = match wrapped {
+                    true => wrap_header(&header[j])
+                        .lines()
+                        .map(|l| l.chars().count())
+                        .max(),
+                    false => Some(header[j].chars().count()),
+                };
+                body.max(head.unwrap_or(0))
+            };
+            // A table too wide for the text width is set a little smaller, with its headers wrapped so
+            // that a narrow column is as wide as its cells, and its wide text columns share the width
+            // the others leave (so that they wrap, and the others do not). One that does not fit even
+            // so, its text columns at their least, gets a landscape page of its own.
+            let wide = !header.is_empty()
+                && (0..header.len()).map(|j| widest(j, false)).sum::<usize>() > WIDE_TABLE_CHARS;
+            let text_column = |j: usize| align[j] == "left" && widest(j, true) > WIDE_TEXT_CHARS;
+            let least: usize = (0..header.len())
+                .map(|j| match text_column(j) {
+                    true => LEAST_TEXT_CHARS,
+                    false => widest(j, true),
+                })
+                .sum();
+            let landscape = wide && least > PORTRAIT_TABLE_CHARS;
             let mut cells: Vec<String> = header
                 .iter()
+                .map(|h| if wide { wrap_header(h) } else { h.clone() })
                 // a zero-width space after each underscore lets snake_case headers wrap
                 .map(|h| format!("strong({})", typst_string(&h.replace('_', "_\u{200B}"))))
                 .collect();
@@ -214,37 +272,26 @@ fn block_source(b: &Block, s: &mut String, files: &mut Vec<(String, Vec<u8>)>) {
                     cells.push(typst_string(r.get(j).map_or("", String::as_str)));
                 }
             }
-            // In a table too wide for the text width, the wide text columns share the width left by the
-            // others (so that they wrap, and the others do not).
-            let widest = |j: usize| {
-                rows.iter()
-                    .map(|r| r.get(j).map_or(0, |c| c.chars().count()))
-                    .chain(std::iter::once(header[j].chars().count()))
-                    .max()
-                    .unwrap_or(0)
-            };
-            let total: usize = (0..header.len()).map(widest).sum();
-            let wide = total > WIDE_TABLE_CHARS && !header.is_empty();
             let columns = if wide {
                 // Each wide text column gets a share of the free width in proportion to its text.
                 let cols: Vec<String> = (0..n)
-                    .map(|j| {
-                        if j < header.len() && align[j] == "left" && widest(j) > WIDE_TEXT_CHARS {
-                            format!("{}fr", widest(j))
-                        } else {
-                            "auto".to_string()
-                        }
+                    .map(|j| match j < header.len() && text_column(j) {
+                        true => format!("{}fr", widest(j, true)),
+                        false => "auto".to_string(),
                     })
                     .collect();
                 format!("({}), inset: (x: 3pt, y: 1.6pt)", cols.join(", "))
             } else {
                 n.to_string()
             };
-            // wide tables are set a little smaller (a scoped show rule after the preamble's)
-            let (open, close) = if wide {
-                ("#[#show table: set text(size: 7.2pt)\n", "]")
-            } else {
-                ("", "")
+            // (the smaller text is a scoped show rule after the preamble's)
+            let (open, close) = match (landscape, wide) {
+                (true, _) => (
+                    "#page(flipped: true)[#show table: set text(size: 7.2pt)\n",
+                    "]",
+                ),
+                (false, true) => ("#[#show table: set text(size: 7.2pt)\n", "]"),
+                (false, false) => ("", ""),
             };
             s.push_str(&format!(
                 "{open}#figure(kind: table, caption: {}, table(columns: {columns}, align: ({}), table.header({}), {})){close}\n\n",

@@ -100,9 +100,7 @@ pub fn outline(s: &Suite, commit: &str) -> Result<Outline> {
             c.provenance
         ))));
         blocks.push(Block::List(case_inputs(c)));
-        if !c.notes.is_empty() {
-            blocks.push(Block::List(c.notes.clone()));
-        }
+        blocks.extend(note_blocks(&c.name, &c.notes));
         if let Some(t) = &c.table {
             blocks.push(Block::Table {
                 caption: format!("{}: numbers", c.name),
@@ -146,6 +144,86 @@ pub fn pdf(s: &Suite, commit: &str) -> Result<Vec<u8>> {
     .pdf()
 }
 
+/// A case's notes as blocks: a list, broken where a note carries a Markdown table (the strip-theory
+/// readings of a ship case, `seakeeping::wave_readings`), which becomes a typeset table between the
+/// note's text before it (in the list) and after it (a paragraph).
+fn note_blocks(case: &str, notes: &[String]) -> Vec<Block> {
+    let mut out = Vec::new();
+    let mut items: Vec<String> = Vec::new();
+    for note in notes {
+        let Some((before, header, rows, after)) = markdown_table(note) else {
+            items.push(note.clone());
+            continue;
+        };
+        items.push(before);
+        out.push(Block::List(std::mem::take(&mut items)));
+        out.push(Block::Table {
+            caption: format!("{case}: the table of the note above"),
+            header,
+            rows,
+        });
+        if !after.is_empty() {
+            out.push(Block::Paragraph(after));
+        }
+    }
+    if !items.is_empty() {
+        out.push(Block::List(items));
+    }
+    out
+}
+
+/// The first Markdown table of `text` (lines starting with `|`: a header, the `|---|` line, rows), as the
+/// text before it, the header cells, the rows and the text after it; None without one. Cells are
+/// unescaped (`\|` is a bar).
+#[allow(clippy::type_complexity)]
+fn markdown_table(text: &str) -> Option<(String, Vec<String>, Vec<Vec<String>>, String)> {
+    let lines: Vec<&str> = text.lines().collect();
+    let start = lines.iter().position(|l| l.trim_start().starts_with('|'))?;
+    let len = lines[start..]
+        .iter()
+        .take_while(|l| l.trim_start().starts_with('|'))
+        .count();
+    let separator = lines.get(start + 1)?;
+    if len < 2 || !separator.trim().trim_matches('|').split('|').all(is_rule) {
+        return None;
+    }
+    let cells = |l: &str| -> Vec<String> {
+        let l = l.trim().strip_prefix('|').unwrap_or(l.trim());
+        let l = l.strip_suffix('|').unwrap_or(l);
+        let mut out = Vec::new();
+        let mut cell = String::new();
+        let mut chars = l.chars().peekable();
+        while let Some(ch) = chars.next() {
+            match ch {
+                '\\' if chars.peek() == Some(&'|') => {
+                    cell.push('|');
+                    chars.next();
+                }
+                '|' => out.push(std::mem::take(&mut cell).trim().to_string()),
+                _ => cell.push(ch),
+            }
+        }
+        out.push(cell.trim().to_string());
+        out
+    };
+    let join = |ls: &[&str]| ls.join("\n").trim().to_string();
+    Some((
+        join(&lines[..start]),
+        cells(lines[start]),
+        lines[start + 2..start + len]
+            .iter()
+            .map(|l| cells(l))
+            .collect(),
+        join(&lines[start + len..]),
+    ))
+}
+
+/// Whether a cell of a Markdown table's rule line is a rule (`---`, `:--`, `--:`, `:-:`).
+fn is_rule(cell: &str) -> bool {
+    let c = cell.trim();
+    c.len() >= 3 && c.trim_matches(':').chars().all(|ch| ch == '-')
+}
+
 /// `text` as a sentence: with a full stop at its end unless it already ends with one (a provenance that
 /// ends in an abbreviation or a sentence of its own).
 fn sentence(text: &str) -> String {
@@ -154,5 +232,48 @@ fn sentence(text: &str) -> String {
         t.to_string()
     } else {
         format!("{t}.")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_note_with_a_markdown_table_is_split_into_text_table_and_text() {
+        let notes = vec![
+            "first".to_string(),
+            "the chain:\n\n| a | \\|s\\| (m) |\n|---|---:|\n| x | 1 |\n| y | 2 |\n\nAfter it."
+                .to_string(),
+            "last".to_string(),
+        ];
+        let b = note_blocks("c", &notes);
+        assert_eq!(b.len(), 4, "{b:?}");
+        match &b[0] {
+            Block::List(items) => assert_eq!(items, &["first".to_string(), "the chain:".into()]),
+            x => panic!("{x:?}"),
+        }
+        match &b[1] {
+            Block::Table { header, rows, .. } => {
+                assert_eq!(header, &["a".to_string(), "|s| (m)".into()]);
+                assert_eq!(
+                    rows,
+                    &[
+                        vec!["x".to_string(), "1".into()],
+                        vec!["y".into(), "2".into()]
+                    ]
+                );
+            }
+            x => panic!("{x:?}"),
+        }
+        assert!(matches!(&b[2], Block::Paragraph(t) if t == "After it."));
+        assert!(matches!(&b[3], Block::List(items) if items == &["last".to_string()]));
+        // no table: one list, as before
+        assert!(matches!(
+            &note_blocks("c", &notes[..1])[..],
+            [Block::List(_)]
+        ));
+        // bars in text without a rule line are not a table
+        assert!(markdown_table("| a |\n| b |").is_none());
     }
 }
