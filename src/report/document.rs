@@ -98,10 +98,10 @@ const WIDE_TEXT_CHARS: usize = 40;
 /// Characters of a wide table's columns (narrow columns at their widest cell, headers wrapped; text
 /// columns at [`LEAST_TEXT_CHARS`]), summed, above which it does not fit the portrait text width at
 /// 7.2 pt: it gets a landscape page of its own.
-const PORTRAIT_TABLE_CHARS: usize = 120;
+const PORTRAIT_TABLE_CHARS: usize = 125;
 
 /// The least width, in characters, a wrapping text column of a wide table is given room for.
-const LEAST_TEXT_CHARS: usize = 30;
+const LEAST_TEXT_CHARS: usize = 20;
 
 /// Characters a header line of a landscape table holds (a longer word keeps its own line).
 const HEADER_LINE_CHARS: usize = 12;
