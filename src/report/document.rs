@@ -103,7 +103,7 @@ const PORTRAIT_TABLE_CHARS: usize = 125;
 /// The least width, in characters, a wrapping text column of a wide table is given room for.
 const LEAST_TEXT_CHARS: usize = 20;
 
-/// Characters a header line of a landscape table holds (a longer word keeps its own line).
+/// Characters a header line of a wide table holds (a longer word keeps its own line).
 const HEADER_LINE_CHARS: usize = 12;
 
 /// `h` broken into lines of at most [`HEADER_LINE_CHARS`] characters at its spaces (a longer word on a
@@ -335,6 +335,19 @@ fn image_source(name: &str, caption: &str, width_mm: f64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_wide_table_s_header_wraps_at_twelve_characters_and_keeps_long_words_whole() {
+        assert_eq!(
+            wrap_header("Ochi P1 0.093 Lpp keel entry (m/s)"),
+            "Ochi P1\n0.093 Lpp\nkeel entry\n(m/s)"
+        );
+        assert_eq!(
+            wrap_header("impact_velocity_m_per_s (m)"),
+            "impact_velocity_m_per_s\n(m)"
+        );
+        assert_eq!(wrap_header("gap closed"), "gap closed");
+    }
 
     #[test]
     fn user_text_is_a_string_literal_not_markup() {
