@@ -23,7 +23,8 @@ use crate::error::{Error, Result};
 use crate::loads::peaks::peak;
 use crate::sph::MotionSpec;
 
-/// Fresh-water density (kg/m3), the SPH runs' default; an assessment uses its loading's density.
+/// Fresh-water density (kg/m3), the SPH runs' default; an assessment (and a sweep) passes its loading's
+/// density to [`estimate_in`].
 pub const RHO: f64 = 1000.0;
 
 /// One sensor's analytic peak.
@@ -253,11 +254,6 @@ fn densify(t: &[f64], v: &[f64], tc: &[f64], c: &[f64], dc: f64) -> (Vec<f64>, V
         vs.push(v[k + 1]);
     }
     (ts, vs, scale < 1.0)
-}
-
-/// Estimate an event's force and sensor pressures in fresh water ([`RHO`]).
-pub fn estimate(case: &EntryCase) -> Result<Estimate> {
-    estimate_in(case, RHO)
 }
 
 /// Estimate an event's force and sensor pressures in water of density `rho` (kg/m3).
@@ -495,7 +491,7 @@ mod peak_tests {
 
 #[cfg(test)]
 mod densify_tests {
-    use super::{densify, estimate};
+    use super::{RHO, densify, estimate_in};
     use crate::assess::plan::EntryCase;
     use crate::sph::MotionSpec;
     use crate::sph::sensors::SensorSpec;
@@ -527,8 +523,8 @@ mod densify_tests {
             sensors: sensors.clone(),
             immersion_m: 0.0,
         };
-        let a = estimate(&case(21)).unwrap();
-        let b = estimate(&case(47)).unwrap();
+        let a = estimate_in(&case(21), RHO).unwrap();
+        let b = estimate_in(&case(47), RHO).unwrap();
         for (x, y) in a.sensors.iter().zip(&b.sensors) {
             assert!(x.peak_pa > 0.0, "{}: no peak", x.name);
             let r = x.peak_pa / y.peak_pa;

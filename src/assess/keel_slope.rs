@@ -31,6 +31,10 @@ use crate::seakeeping::analysis::Station;
 /// Share of an entry velocity from which leaving the term out is warned about.
 pub const WARN_SHARE: f64 = 0.05;
 
+/// How a warning that the term is left out ends ([`lines`]): the report's sign-off page finds the
+/// stations by it. Each such warning starts "station <f> Lpp:".
+pub const LEFT_OUT: &str = "--keel-slope-term adds it";
+
 /// The largest share |U dz_k/dx| / V of the keel-slope term in the keel-entry velocity V of a station's
 /// events (keel entries only; with the term on V contains it), with the event's speed and V.
 fn largest_share(station: &Station, events: &[Event]) -> Option<(f64, f64, f64)> {
@@ -77,7 +81,7 @@ pub fn lines(stations: &[Station], events: &[Event], on: bool) -> Vec<String> {
                  2D+t plane the section sinks at U dz_k/dx = {vk:.3} m/s at {u:.3} m/s, {:.0} % of the \
                  keel-entry velocity {v:.3} m/s. This assessment leaves that term out, as Veen (2010) does, \
                  so its entry velocities here {effect} by that much and its pressures by roughly twice the \
-                 share; --keel-slope-term adds it",
+                 share; {LEFT_OUT}",
                 st.aft_of_fp,
                 100.0 * share
             ));

@@ -175,14 +175,13 @@ impl<'a> VariantModel<'a> {
             1.0,
             &self.strip.table,
         )?;
-        let stats = slamming::statistics_from_spectra(&self.strip.model, &responses, &pts);
-        Ok(stats
-            .into_iter()
-            .zip(&self.stations)
-            .map(|(st, s)| match self.keel_slope_term {
-                true => st.with_steady_velocity(speed * s.keel_slope),
-                false => st,
-            })
-            .collect())
+        let mut stats = slamming::statistics_from_spectra(&self.strip.model, &responses, &pts);
+        // as `seakeeping::analysis::run` does
+        if self.keel_slope_term {
+            for (st, s) in stats.iter_mut().zip(&self.stations) {
+                *st = st.with_steady_velocity(speed * s.keel_slope);
+            }
+        }
+        Ok(stats)
     }
 }

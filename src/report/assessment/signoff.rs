@@ -240,7 +240,7 @@ fn keel_slope_paragraph(r: &mut Report, s: &serde_json::Value) {
     let left_out: Vec<&str> = list(s, "warnings")
         .iter()
         .filter_map(|w| w.as_str())
-        .filter(|w| w.contains("--keel-slope-term adds it"))
+        .filter(|w| w.contains(crate::assess::keel_slope::LEFT_OUT))
         .filter_map(|w| w.split(':').next())
         .map(|w| w.trim_start_matches("station ").trim_end_matches(" Lpp"))
         .collect();
