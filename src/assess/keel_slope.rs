@@ -76,12 +76,15 @@ pub fn lines(stations: &[Station], events: &[Event], on: bool) -> Vec<String> {
             ));
         } else if !on && share >= WARN_SHARE {
             let effect = if vk > 0.0 { "are low" } else { "are high" };
+            // pressures scale about with the square of the entry velocity
+            let factor = (v / (v + vk)).powi(2);
             out.push(format!(
                 "station {} Lpp: the keel {rises} at dz_k/dx = {slope:.4} above the calm waterline, so in the \
                  2D+t plane the section sinks at U dz_k/dx = {vk:.3} m/s at {u:.3} m/s, {:.0} % of the \
                  keel-entry velocity {v:.3} m/s. This assessment leaves that term out, as Veen (2010) does, \
-                 so its entry velocities here {effect} by that much and its pressures by roughly twice the \
-                 share; {LEFT_OUT}",
+                 so its entry velocities here {effect} by that much, and its pressures, which scale about \
+                 with the square of the entry velocity, are about {factor:.2} times what they are with it; \
+                 {LEFT_OUT}",
                 st.aft_of_fp,
                 100.0 * share
             ));
@@ -132,6 +135,8 @@ mod tests {
         let w = lines(&[station(0.04)], &events, false);
         assert_eq!(w.len(), 1);
         assert!(w[0].contains("0.400 m/s") && w[0].contains("8 %") && w[0].contains("are low"));
+        // (5 / 5.4)^2
+        assert!(w[0].contains("about 0.86 times"), "{}", w[0]);
         // 4 % only: no warning.
         assert!(lines(&[station(0.04)], &events[..1], false).is_empty());
         // A keel falling towards the bow: the entry velocities without the term are high.

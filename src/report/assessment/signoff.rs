@@ -255,9 +255,9 @@ fn keel_slope_paragraph(r: &mut Report, s: &serde_json::Value) {
     } else if !left_out.is_empty() {
         r.para(&format!(
             "Entry velocities: the keel-slope term U dz_k/dx is left out, as in Veen (2010), but at {} {} \
-             Lpp it would change a keel-entry velocity by 5 % or more (see Warnings). The design values there are \
-             off by roughly twice that share, low where the keel rises towards the bow: assess with \
-             --keel-slope-term before signing them.",
+             Lpp it would change a keel-entry velocity by 5 % or more. The design values there are off about \
+             as the square of the entry velocity (each station's warning under Warnings gives the factor), \
+             low where the keel rises towards the bow: assess with --keel-slope-term before signing them.",
             if left_out.len() == 1 {
                 "station"
             } else {
