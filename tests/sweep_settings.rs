@@ -44,7 +44,7 @@ fn air_and_the_keel_slope_term_are_in_the_case_key() {
     assert_ne!(base, key("keel_slope_term = true"));
 }
 
-fn sweep_pressures(settings: &str) -> Vec<(String, f64)> {
+fn sweep_result(settings: &str) -> sweep::SweepResult {
     let dir = tempfile::tempdir().unwrap();
     let (f, _) = files(dir.path(), settings);
     let opts = Options {
@@ -53,14 +53,18 @@ fn sweep_pressures(settings: &str) -> Vec<(String, f64)> {
     };
     let r = sweep::run(&f, &opts, &Default::default()).unwrap();
     assert_eq!(r.failed_cases, 0, "{:?}", r.warnings);
-    r.cases[0].stations[0]
+    r
+}
+
+fn sweep_pressures(settings: &str) -> Vec<(String, f64)> {
+    sweep_result(settings).cases[0].stations[0]
         .sensors
         .iter()
         .map(|s| (s.name.clone(), s.design_pressure_pa.unwrap_or(0.0)))
         .collect()
 }
 
-fn assess_pressures(on: bool) -> Vec<(String, f64)> {
+fn assessment(on: bool) -> assess::Assessment {
     let dir = tempfile::tempdir().unwrap();
     let (_, sea) = files(dir.path(), "");
     let hull = Hull::from_file(Path::new(&format!(
@@ -81,7 +85,11 @@ fn assess_pressures(on: bool) -> Vec<(String, f64)> {
         &Default::default(),
     )
     .unwrap();
-    a.stations[0]
+    a
+}
+
+fn assess_pressures(on: bool) -> Vec<(String, f64)> {
+    assessment(on).stations[0]
         .design_pressure_pa
         .iter()
         .map(|d| (d.name.clone(), d.value.unwrap_or(0.0)))
@@ -110,4 +118,24 @@ fn the_keel_slope_term_of_a_sweep_is_the_one_of_assess() {
             );
         }
     }
+}
+
+/// An analytic sweep that leaves the term out warns about it as `assess` does, naming the case; with the
+/// term on there is no such warning.
+#[test]
+fn an_analytic_sweep_warns_when_it_leaves_the_keel_slope_term_out() {
+    let left_out = |w: &String| w.contains(assess::keel_slope::LEFT_OUT);
+    let from_assess: Vec<String> = assessment(false)
+        .warnings
+        .into_iter()
+        .filter(left_out)
+        .collect();
+    assert_eq!(from_assess.len(), 1, "{from_assess:?}");
+    let r = sweep_result("");
+    let id = &r.cases[0].id;
+    let from_sweep: Vec<&String> = r.warnings.iter().filter(|w| left_out(w)).collect();
+    assert_eq!(from_sweep, [&format!("{} (case {id})", from_assess[0])]);
+    assert!(r.cases[0].warnings.iter().any(left_out));
+    let on = sweep_result("keel_slope_term = true");
+    assert!(!on.warnings.iter().any(left_out), "{:?}", on.warnings);
 }

@@ -95,7 +95,8 @@ type StatsMemo = std::sync::Mutex<
     >,
 >;
 
-/// An analytic case from its variant's strip theory.
+/// An analytic case from its variant's strip theory: its events, its stations' slam statistics and the
+/// case's warnings (the keel-slope term's, as `assess` gives them: [`assess::keel_slope::lines`]).
 fn analytic_case(
     p: &Prepared,
     i: usize,
@@ -103,47 +104,51 @@ fn analytic_case(
     vm: &VariantModel,
     cs: &CaseSea,
     memo: &StatsMemo,
-) -> Result<(Vec<EventResult>, Vec<Stats>)> {
-    let mut events = Vec::new();
+) -> Result<(Vec<EventResult>, Vec<Stats>, Vec<String>)> {
+    let mut planned = Vec::new();
     for &u in &cs.speeds {
-        for e in vm.events(&v.hull, u, &cs.regular)? {
-            // in the loading's water, as `assess` does (sea water 1025 kg/m3 for most hulls)
-            let est = e
+        planned.extend(vm.events(&v.hull, u, &cs.regular)?);
+    }
+    // over all the case's speeds at once, as `assess` states them
+    let case_warnings = assess::keel_slope::lines(&vm.stations, &planned, vm.keel_slope_term);
+    let mut events = Vec::new();
+    for e in planned {
+        // in the loading's water, as `assess` does (sea water 1025 kg/m3 for most hulls)
+        let est = e
+            .entry
+            .as_ref()
+            .map(|c| assess::analytic::estimate_in(c, v.loading.rho));
+        let mut warnings = Vec::new();
+        let analytic = match est {
+            Some(Ok(a)) => {
+                warnings.extend(a.notes.iter().map(|n| format!("analytic: {n}")));
+                Some(a)
+            }
+            Some(Err(err)) => {
+                warnings.push(format!("no analytic estimate: {err}"));
+                None
+            }
+            None => None,
+        };
+        events.push(EventResult {
+            station: e.station,
+            x_m: e.x,
+            speed_m_per_s: e.speed_m_s,
+            wave: e.wave.clone(),
+            slam_flag: e.flag,
+            entry_velocity_m_per_s: e.entry_velocity_m_s,
+            analytic,
+            sph: None,
+            run_folder: None,
+            failed: None,
+            warnings,
+            entry_kind: e
                 .entry
                 .as_ref()
-                .map(|c| assess::analytic::estimate_in(c, v.loading.rho));
-            let mut warnings = Vec::new();
-            let analytic = match est {
-                Some(Ok(a)) => {
-                    warnings.extend(a.notes.iter().map(|n| format!("analytic: {n}")));
-                    Some(a)
-                }
-                Some(Err(err)) => {
-                    warnings.push(format!("no analytic estimate: {err}"));
-                    None
-                }
-                None => None,
-            };
-            events.push(EventResult {
-                station: e.station,
-                x_m: e.x,
-                speed_m_per_s: e.speed_m_s,
-                wave: e.wave.clone(),
-                slam_flag: e.flag,
-                entry_velocity_m_per_s: e.entry_velocity_m_s,
-                analytic,
-                sph: None,
-                run_folder: None,
-                failed: None,
-                warnings,
-                entry_kind: e
-                    .entry
-                    .as_ref()
-                    .map(|_| crate::assess::plan::kind_of(e.flare.as_ref())),
-                flare_event: e.flare.clone(),
-                design_event: None,
-            });
-        }
+                .map(|_| crate::assess::plan::kind_of(e.flare.as_ref())),
+            flare_event: e.flare.clone(),
+            design_event: None,
+        });
     }
     let mut stats: Vec<Stats> = vec![None; p.stations.len()];
     for &u in &cs.speeds {
@@ -167,7 +172,7 @@ fn analytic_case(
             }
         }
     }
-    Ok((events, stats))
+    Ok((events, stats, case_warnings))
 }
 
 /// The stations' slam statistics from an assessment's `irregular` records.
@@ -347,7 +352,8 @@ pub fn run(p: &Prepared, opts: &Options, progress: &ProgressHandle) -> Result<Sw
                     let mut c = blank(p, i);
                     match model_of(p.case_variant[i]) {
                         Some(Ok(vm)) => match analytic_case(p, i, v, vm, &p.case_sea[i], &memo) {
-                            Ok((events, stats)) => {
+                            Ok((events, stats, warnings)) => {
+                                c.warnings = warnings;
                                 let at: Vec<(f64, f64)> = p
                                     .stations
                                     .iter()
@@ -426,14 +432,7 @@ pub fn assemble(p: &Prepared, shard: Option<Shard>, cases: Vec<CaseResult>) -> R
         "strip_table_spacing_ln_omega": motions::TABLE_SPACING,
     });
     let prov = Provenance::new(&refs, settings)?;
-    let mut warnings: Vec<String> = Vec::new();
-    for c in &cases {
-        for w in &c.warnings {
-            if !warnings.contains(w) {
-                warnings.push(w.clone());
-            }
-        }
-    }
+    let warnings = results::warnings_of(&cases);
     Ok(SweepResult {
         tool: TOOL.to_string(),
         provenance: Prov::from_provenance(&prov),

@@ -177,14 +177,7 @@ pub fn merge(dirs: &[PathBuf]) -> Result<SweepResult> {
     let missing_count = first.total_cases - slots.len();
     let first_missing = (0..first.total_cases).find(|i| !slots.contains_key(i));
     let cases: Vec<_> = slots.into_values().collect();
-    let mut warnings: Vec<String> = Vec::new();
-    for c in &cases {
-        for w in &c.warnings {
-            if !warnings.contains(w) {
-                warnings.push(w.clone());
-            }
-        }
-    }
+    let mut warnings = super::results::warnings_of(&cases);
     if let Some(first_missing) = first_missing {
         warnings.push(format!(
             "{missing_count} of the sweep's {} cases are missing from the shards given (first missing: case \

@@ -231,6 +231,33 @@ pub struct SweepResult {
     pub warnings: Vec<String>,
 }
 
+/// The sweep's warnings from its cases' own: each text once, in the order of first appearance, followed
+/// by the cases that gave it ("(case c003)", or "(cases c001, c004 and 3 more)" when it came from more
+/// than one), so that a reader of the sweep's report can find the case a warning belongs to.
+pub fn warnings_of(cases: &[CaseResult]) -> Vec<String> {
+    let mut texts: Vec<(&str, Vec<&str>)> = Vec::new();
+    for c in cases {
+        for w in &c.warnings {
+            match texts.iter_mut().find(|(t, _)| *t == w.as_str()) {
+                Some((_, ids)) => ids.push(&c.id),
+                None => texts.push((w, vec![&c.id])),
+            }
+        }
+    }
+    const LISTED: usize = 3;
+    texts
+        .into_iter()
+        .map(|(t, ids)| {
+            let mut who = ids[..ids.len().min(LISTED)].join(", ");
+            if ids.len() > LISTED {
+                who.push_str(&format!(" and {} more", ids.len() - LISTED));
+            }
+            let noun = if ids.len() == 1 { "case" } else { "cases" };
+            format!("{t} ({noun} {who})")
+        })
+        .collect()
+}
+
 fn num(v: Option<f64>) -> String {
     v.map_or(String::new(), csv_number)
 }
@@ -426,4 +453,44 @@ pub fn best_csv(r: &SweepResult) -> Result<String> {
     let mut prov = r.provenance.provenance();
     prov.settings["best_rule"] = serde_json::json!(rule_text(&r.best));
     crate::sph::output::csv_text(Some(&prov), &header, &rows)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn case(id: &str, warnings: &[&str]) -> CaseResult {
+        CaseResult {
+            index: 0,
+            id: id.into(),
+            key: String::new(),
+            parameters: Vec::new(),
+            wave: None,
+            hull_file: None,
+            lpp_m: 1.0,
+            speeds_m_per_s: Vec::new(),
+            stations: Vec::new(),
+            max_design_pressure_pa: None,
+            max_section_force_n_per_m: None,
+            max_slam_probability: None,
+            failed: None,
+            warnings: warnings.iter().map(|w| w.to_string()).collect(),
+        }
+    }
+
+    #[test]
+    fn a_warning_is_listed_once_with_the_cases_that_gave_it() {
+        let cases = [
+            case("c1", &["a", "b"]),
+            case("c2", &["a"]),
+            case("c3", &["a"]),
+            case("c4", &["a"]),
+            case("c5", &["a"]),
+        ];
+        assert_eq!(
+            warnings_of(&cases),
+            ["a (cases c1, c2, c3 and 2 more)", "b (case c1)"]
+        );
+        assert!(warnings_of(&[case("c1", &[])]).is_empty());
+    }
 }
