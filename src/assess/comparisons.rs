@@ -12,6 +12,7 @@ use super::plan::Plan;
 use super::results::{Assessment, EventResult};
 use crate::error::{Error, Result};
 use crate::hull::Hull;
+use crate::provenance::{InputFile, sha256_hex};
 use crate::impact::flare;
 use crate::seakeeping::relative_motion::{self, RelativeMotion};
 use crate::seakeeping::strip_theory::{self, StripSettings};
@@ -51,6 +52,10 @@ pub struct Validation {
     pub trend_checks: Vec<TrendCheck>,
     #[serde(rename = "validation_notes")]
     pub notes: Vec<String>,
+    /// The reference files the comparisons read (compiled into the tool) with the SHA-256 of their text
+    /// as built in: the index `data/reference/validation.toml` and the matched case's file. Empty when no
+    /// comparison is made.
+    pub reference_files: Vec<InputFile>,
 }
 
 #[derive(Deserialize)]
@@ -69,6 +74,36 @@ struct Case {
 const INDEX: &str = include_str!("../../data/reference/validation.toml");
 const HERMUNDSTAD: &str = include_str!("../../data/reference/hermundstad2005_panel.toml");
 pub(crate) const OCHI: &str = include_str!("../../data/reference/ochi1958_vform.toml");
+
+/// The reference files compiled in, by their path in the repository.
+const BUILT_IN: [(&str, &str); 3] = [
+    ("data/reference/validation.toml", INDEX),
+    ("data/reference/hermundstad2005_panel.toml", HERMUNDSTAD),
+    ("data/reference/ochi1958_vform.toml", OCHI),
+];
+
+/// The index and the reference file of `case`, each with the SHA-256 of its built-in text.
+fn reference_files(case: &Case) -> Result<Vec<InputFile>> {
+    ["data/reference/validation.toml", case.reference.as_str()]
+        .into_iter()
+        .map(|path| {
+            let text = BUILT_IN
+                .iter()
+                .find(|(p, _)| *p == path)
+                .map(|(_, t)| *t)
+                .ok_or_else(|| {
+                    Error::Invalid(format!(
+                        "data/reference/validation.toml: the reference file '{path}' is not built into \
+                         the tool"
+                    ))
+                })?;
+            Ok(InputFile {
+                path: path.to_string(),
+                sha256: sha256_hex(text.as_bytes()),
+            })
+        })
+        .collect()
+}
 
 /// A number at `path` (table.key) of a compiled-in reference file.
 pub(crate) fn reference_number(text: &str, table: &str, key: &str) -> Result<f64> {
@@ -108,6 +143,7 @@ pub fn validate(hull: &Hull, sea_name: &str, plan: &Plan, a: &Assessment) -> Res
         }
     };
     v.reference_case = Some(format!("{} ({})", case.kind, case.reference));
+    v.reference_files = reference_files(case)?;
     Ok(v)
 }
 
@@ -398,4 +434,26 @@ pub fn veen_ochi_entry_speeds() -> Result<Vec<(f64, f64, f64)>> {
         (num("p1_station_aft_of_fp")?, u, num("p1_entry_speed_m_s")?),
         (num("p3_station_aft_of_fp")?, u, num("p3_entry_speed_m_s")?),
     ])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The hashes stated for the built-in reference files are those of the files in the repository, and
+    /// every case of the index names a file that is built in.
+    #[test]
+    fn the_built_in_reference_files_are_the_repository_s() {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+        for (path, text) in BUILT_IN {
+            let on_disk = std::fs::read(root.join(path)).unwrap();
+            assert_eq!(sha256_hex(text.as_bytes()), sha256_hex(&on_disk), "{path}");
+        }
+        let index: Index = toml::from_str(INDEX).unwrap();
+        for case in &index.case {
+            let files = reference_files(case).unwrap();
+            assert_eq!(files.len(), 2);
+            assert_eq!(files[1].path, case.reference);
+        }
+    }
 }

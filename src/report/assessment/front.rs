@@ -98,10 +98,17 @@ pub fn title(r: &mut Report, saved: &Saved, stamp: Option<String>) {
         kv[3].1 = "none".into();
     }
     r.push(Block::KeyValue(kv));
-    let rows: Vec<Vec<String>> = list(&s["provenance"], "inputs")
+    let mut rows: Vec<Vec<String>> = list(&s["provenance"], "inputs")
         .iter()
         .map(|i| vec![text(i, "path").to_string(), text(i, "sha256").to_string()])
         .collect();
+    // the published numbers of the comparisons, compiled into the tool
+    rows.extend(list(s, "reference_files").iter().map(|i| {
+        vec![
+            format!("{} (reference data, built in)", text(i, "path")),
+            text(i, "sha256").to_string(),
+        ]
+    }));
     r.push(Block::Table {
         caption: "Input files and their SHA-256".into(),
         header: vec!["file".into(), "SHA-256".into()],
