@@ -62,10 +62,14 @@ fn every_peak_gets_a_statement_from_a_coarser_companion() {
         assert!(p.values.iter().all(|v| v.is_finite()));
         assert!(!p.statement.is_empty());
         // a GCI wherever the levels were compared: not for a quantity that is zero, a record without a
-        // slamming peak at the reported resolution, or a companion whose peak is another event
+        // slamming peak at the reported resolution, or a companion whose peak is another event or that
+        // has none
         if !matches!(
             p.verdict,
-            Verdict::NotWetted | Verdict::NotAssessed | Verdict::Mismatched
+            Verdict::NotWetted
+                | Verdict::NotAssessed
+                | Verdict::Mismatched
+                | Verdict::CompanionUnresolved
         ) {
             let g = p.gci.expect("a GCI");
             assert!(g.is_finite() && g >= 0.0, "{}", p.statement);

@@ -12,8 +12,8 @@ use super::plan::Plan;
 use super::results::{Assessment, EventResult};
 use crate::error::{Error, Result};
 use crate::hull::Hull;
-use crate::provenance::{InputFile, sha256_hex};
 use crate::impact::flare;
+use crate::provenance::{InputFile, sha256_hex};
 use crate::seakeeping::relative_motion::{self, RelativeMotion};
 use crate::seakeeping::strip_theory::{self, StripSettings};
 

@@ -48,6 +48,10 @@ pub enum Verdict {
     /// The coarser run's peak is another event than the reported one (another phase, or a peak time
     /// outside the matching window; [`crate::loads::anatomy::matched`]), so the two are not compared.
     Mismatched,
+    /// The coarser run does not resolve the impact the reported run resolves (no slamming peak in its
+    /// impact window: the contact crosses the sensor inside that run's contact transient, or not at
+    /// all), so there is nothing to compare the reported peak with.
+    CompanionUnresolved,
 }
 
 impl Verdict {

@@ -150,14 +150,17 @@ fn slamming_statement(levels: &[&ReportedPeak], dp: &[f64]) -> PeakConvergence {
     }
     let mut n = 1;
     let mut why = None;
+    // whether the first level left out has no slamming peak at all (rather than another event's)
+    let mut unresolved = false;
     for l in &levels[1..] {
         match l
             .anatomy
             .as_ref()
-            .map(|a| crate::loads::anatomy::matched(fine, a))
+            .map(|a| (a, crate::loads::anatomy::matched(fine, a)))
         {
-            Some(Ok(())) => n += 1,
-            Some(Err(e)) => {
+            Some((_, Ok(()))) => n += 1,
+            Some((a, Err(e))) => {
+                unresolved = a.slamming_peak.is_none();
                 why = Some(e);
                 break;
             }
@@ -180,7 +183,12 @@ fn slamming_statement(levels: &[&ReportedPeak], dp: &[f64]) -> PeakConvergence {
     }
     if let Some(why) = why {
         let at = dp[n] * 1e3;
-        if n == 1 {
+        if n == 1 && unresolved {
+            c.verdict = Verdict::CompanionUnresolved;
+            c.statement = format!(
+                "{name}: not assessed: the companion at dp {at:.3} mm does not resolve the impact ({why})"
+            );
+        } else if n == 1 {
             c.verdict = Verdict::Mismatched;
             c.statement = format!(
                 "{name}: not assessed: the companion at dp {at:.3} mm does not show the same impact ({why})"
@@ -434,6 +442,21 @@ mod tests {
         let b = slam(2600.0, 0.136);
         let c = statement(&[&a, &b], &[0.004, 0.008]);
         assert_eq!(c.verdict, Verdict::Converged, "{}", c.statement);
+    }
+
+    #[test]
+    fn a_companion_without_a_peak_is_told_apart_from_another_event() {
+        // S093-1 raw of the committed Ochi report: the coarser level's contact crosses the sensor
+        // inside its contact transient
+        let a = slam(2871.0, 0.0147);
+        let mut b = slam(0.0, 0.0);
+        if let Some(an) = &mut b.anatomy {
+            an.slamming_peak = None;
+            an.status = ImpactStatus::InTransient;
+        }
+        let c = statement(&[&a, &b], &[0.007, 0.014]);
+        assert_eq!(c.verdict, Verdict::CompanionUnresolved, "{}", c.statement);
+        assert!(c.statement.contains("does not resolve"), "{}", c.statement);
     }
 
     #[test]

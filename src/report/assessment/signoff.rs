@@ -121,6 +121,9 @@ fn flags_of_source(d: &Value) -> Vec<String> {
         // a rising value's flag already says it is not converged
         Some("not_converged") if !rising => f.push("SPH not converged".into()),
         Some("mismatched") => f.push("SPH levels show different events".into()),
+        Some("companion_unresolved") => f.push(
+            "SPH convergence not assessed: the coarser level does not resolve the impact".into(),
+        ),
         Some("not_assessed") => f.push("SPH convergence not assessed".into()),
         _ => {}
     }
@@ -281,7 +284,9 @@ pub fn page(r: &mut Report, saved: &Saved) {
          convergence index, from two levels with the order 1 assumed unless three give it), or, where the \
          levels' peaks are different events, the difference between them. Verdicts: converged (GCI at \
          most 5 %), acceptable (at most 20 %), not converged (above 20 %: refine before relying on the \
-         SPH value), mismatched (the coarser level's peak is another event), not assessed (one level, \
+         SPH value), mismatched (the coarser level's peak is another event), companion unresolved (the \
+         coarser level has no peak in the impact window: its contact crosses the sensor inside its \
+         contact transient), not assessed (one level, \
          or no SPH impact). A verdict measures how much the peak moves between the run's spacings, not \
          its error against an exact solution: on the validation's constant-speed wedges the default \
          level's force-panel peaks read 0.86-1.38 of the exact similarity pressure (validation case \

@@ -18,6 +18,10 @@ pub fn verdict_mark(v: &str) -> (Mark, &'static str) {
         "acceptable" => (Mark::Ring, "SPH, acceptable (GCI <= 20 %)"),
         "not_converged" => (Mark::Cross, "SPH, not converged"),
         "mismatched" => (Mark::Triangle, "SPH, levels show different events"),
+        "companion_unresolved" => (
+            Mark::Square,
+            "SPH, coarser level does not resolve the impact",
+        ),
         _ => (Mark::Square, "SPH, convergence not assessed"),
     }
 }
