@@ -36,7 +36,9 @@
 //! * no SPH run: design = A (source `analytic`); where the analytic models give no peak (a panel
 //!   wetted at once on a flat keel or below an immersed start's waterline, whose pressure only falls
 //!   from the singular start), there is no design value: source [`NO_VALUE_WETTED_AT_START`], value
-//!   `None`.
+//!   `None`; where they give the panel no pressure at all (a vertical side, or above the contact's
+//!   reach), the value is 0 and its source says so ([`ANALYTIC_NO_PRESSURE`]), so that a zero is not
+//!   read as a computed impact.
 //!
 //! Why this rule: the analytic sensor pressure is the modified Logvinovich model corrected to the
 //! nonlinear similarity solution of the local wedge (within the stated error of
@@ -77,6 +79,12 @@ pub struct SphQuantity<'a> {
 pub enum AnalyticPeak {
     /// The models' peak.
     Peak(f64),
+    /// The models give the panel no pressure at any time of the event (peak and impulse both zero): it
+    /// is on a vertical part of the contour, which they wet without advancing their contact across it
+    /// (the half-breadth does not grow there, so the impact term c c' / sqrt(c^2 - y^2) has no
+    /// counterpart), or above the contact's reach in the event. Its value is 0, said as such
+    /// ([`ANALYTIC_NO_PRESSURE`]).
+    Zero,
     /// The models compute the quantity, but its values are only the decay of a singular start (a panel
     /// wetted at once on a flat keel or below an immersed start's waterline): no peak
     /// ([`SensorEstimate::no_peak_after_start`]).
@@ -90,6 +98,7 @@ impl AnalyticPeak {
     pub fn value(self) -> Option<f64> {
         match self {
             AnalyticPeak::Peak(v) => Some(v),
+            AnalyticPeak::Zero => Some(0.0),
             AnalyticPeak::NoPeakAfterStart | AnalyticPeak::Absent => None,
         }
     }
@@ -98,9 +107,9 @@ impl AnalyticPeak {
     pub fn of_sensor(estimate: Option<&SensorEstimate>) -> Self {
         match estimate {
             None => AnalyticPeak::Absent,
-            Some(e) => e
-                .peak()
-                .map_or(AnalyticPeak::NoPeakAfterStart, AnalyticPeak::Peak),
+            Some(e) if e.no_peak_after_start => AnalyticPeak::NoPeakAfterStart,
+            Some(e) if e.peak_pa == 0.0 && e.impulse_pa_s == 0.0 => AnalyticPeak::Zero,
+            Some(e) => AnalyticPeak::Peak(e.peak_pa),
         }
     }
 }
@@ -167,14 +176,25 @@ pub const NO_VALUE_WETTED_AT_START: &str =
 /// The source of a design value from the analytic estimate alone, where no SPH ran in the event.
 pub const ANALYTIC_WITHOUT_SPH: &str = "analytic";
 
-/// The design value without an SPH run: the analytic peak (source `analytic`), no value where the
-/// analytic values are only the decay of a singular start ([`NO_VALUE_WETTED_AT_START`]), `None`
-/// without an analytic estimate.
+/// The source of a zero design value from the analytic estimate alone ([`AnalyticPeak::Zero`]): no SPH
+/// run, and no pressure from the models at any time of the event.
+pub const ANALYTIC_NO_PRESSURE: &str =
+    "analytic (0: vertical side or out of reach, no impact pressure in the 2D models)";
+
+/// The design value without an SPH run: the analytic peak (source `analytic`), 0 with its reason where
+/// the models give no pressure at all ([`ANALYTIC_NO_PRESSURE`]), no value where the analytic values
+/// are only the decay of a singular start ([`NO_VALUE_WETTED_AT_START`]), `None` without an analytic
+/// estimate.
 fn without_sph(a: AnalyticPeak) -> Option<Decision> {
     match a {
         AnalyticPeak::Peak(v) => Some(Decision {
             value: Some(v),
             source: ANALYTIC_WITHOUT_SPH,
+            uncertainty: None,
+        }),
+        AnalyticPeak::Zero => Some(Decision {
+            value: Some(0.0),
+            source: ANALYTIC_NO_PRESSURE,
             uncertainty: None,
         }),
         AnalyticPeak::NoPeakAfterStart => Some(Decision {
@@ -378,6 +398,32 @@ mod tests {
         .unwrap();
         assert!((d.value.unwrap() - 2300.0).abs() < 1e-9);
         assert_eq!(d.source, "sph (acceptable)");
+    }
+
+    #[test]
+    fn a_panel_the_models_give_no_pressure_reads_zero_with_its_reason() {
+        let e = SensorEstimate {
+            name: "G65".into(),
+            peak_pa: 0.0,
+            peak_time_s: 0.22,
+            impulse_pa_s: 0.0,
+            acoustic_bound_pa: None,
+            uncorrected_peak_pa: Some(0.0),
+            no_peak_after_start: false,
+        };
+        let a = AnalyticPeak::of_sensor(Some(&e));
+        assert_eq!(a, AnalyticPeak::Zero);
+        let d = decide(None, a).unwrap();
+        assert_eq!((d.value, d.source), (Some(0.0), ANALYTIC_NO_PRESSURE));
+        // beside an SPH peak it is an analytic value of 0, which never governs
+        let d = decide(Some(q(1500.0, Some(0.3), "not_converged")), a).unwrap();
+        assert_eq!(d.source, "sph (not converged)");
+        // a pressure at some time (an impulse) is a peak, however small
+        let e = SensorEstimate {
+            impulse_pa_s: 1e-6,
+            ..e
+        };
+        assert_eq!(AnalyticPeak::of_sensor(Some(&e)), AnalyticPeak::Peak(0.0));
     }
 
     #[test]
