@@ -49,6 +49,16 @@ fn largest_share(station: &Station, events: &[Event]) -> Option<(f64, f64, f64)>
         .max_by(|a, b| a.0.total_cmp(&b.0))
 }
 
+/// A share as a percentage, with one decimal below 10 % (a small term then does not read "0 %").
+fn percent(share: f64) -> String {
+    let pc = 100.0 * share;
+    if pc < 10.0 {
+        format!("{pc:.1} %")
+    } else {
+        format!("{pc:.0} %")
+    }
+}
+
 /// The warning and note lines of the keel-slope term for an assessment's `stations` and `events`:
 /// with the term off, one warning per station where it would be at least [`WARN_SHARE`] of a keel-entry
 /// velocity; with it on, one line per station with a keel slope, stating what it added.
@@ -69,10 +79,10 @@ pub fn lines(stations: &[Station], events: &[Event], on: bool) -> Vec<String> {
             out.push(format!(
                 "station {} Lpp: the keel-slope term is included: the keel {rises} at dz_k/dx = {slope:.4} \
                  above the calm waterline, so the section sinks through the 2D+t plane at U dz_k/dx = \
-                 {vk:.3} m/s at {u:.3} m/s, {:.0} % of the keel-entry velocity {v:.3} m/s there (flare events \
+                 {vk:.3} m/s at {u:.3} m/s, {} of the keel-entry velocity {v:.3} m/s there (flare events \
                  and measured records exclude it)",
                 st.aft_of_fp,
-                100.0 * share
+                percent(share)
             ));
         } else if !on && share >= WARN_SHARE {
             let effect = if vk > 0.0 { "are low" } else { "are high" };
@@ -80,13 +90,13 @@ pub fn lines(stations: &[Station], events: &[Event], on: bool) -> Vec<String> {
             let factor = (v / (v + vk)).powi(2);
             out.push(format!(
                 "station {} Lpp: the keel {rises} at dz_k/dx = {slope:.4} above the calm waterline, so in the \
-                 2D+t plane the section sinks at U dz_k/dx = {vk:.3} m/s at {u:.3} m/s, {:.0} % of the \
+                 2D+t plane the section sinks at U dz_k/dx = {vk:.3} m/s at {u:.3} m/s, {} of the \
                  keel-entry velocity {v:.3} m/s. This assessment leaves that term out, as Veen (2010) does, \
                  so its entry velocities here {effect} by that much, and its pressures, which scale about \
                  with the square of the entry velocity, are about {factor:.2} times what they are with it; \
                  {LEFT_OUT}",
                 st.aft_of_fp,
-                100.0 * share
+                percent(share)
             ));
         }
     }
@@ -134,7 +144,7 @@ mod tests {
         let events = [event(10.0, 10.0), event(10.0, 5.0)];
         let w = lines(&[station(0.04)], &events, false);
         assert_eq!(w.len(), 1);
-        assert!(w[0].contains("0.400 m/s") && w[0].contains("8 %") && w[0].contains("are low"));
+        assert!(w[0].contains("0.400 m/s") && w[0].contains("8.0 %") && w[0].contains("are low"));
         // (5 / 5.4)^2
         assert!(w[0].contains("about 0.86 times"), "{}", w[0]);
         // 4 % only: no warning.
