@@ -90,8 +90,7 @@ pub fn definition(basis: Basis, n: f64, exposure_h: f64, peak_period_s: f64) -> 
 /// stand-in, slower than the sea's slams. The entry velocity itself comes from the slam statistics and
 /// is not affected.
 pub fn amplitude_warning(zeta: f64, hs: f64, exposure_h: f64, tp: f64) -> Option<String> {
-    let waves = (exposure_h * 3600.0 / tp).max(1.0);
-    let largest = 0.25 * hs * (2.0 * waves.ln()).sqrt();
+    let (largest, waves) = largest_amplitude(hs, exposure_h, tp);
     (zeta.is_finite() && largest > 0.0 && zeta > largest).then(|| {
         format!(
             "its profile's regular wave at the spectral peak period {tp:.2} s needs an amplitude of {zeta:.2} m \
@@ -102,6 +101,71 @@ pub fn amplitude_warning(zeta: f64, hs: f64, exposure_h: f64, tp: f64) -> Option
             zeta / largest
         )
     })
+}
+
+/// The most probable largest wave amplitude of an exposure of `exposure_h` hours to a sea of significant
+/// height `hs` and peak period `tp`, (Hs / 4) sqrt(2 ln N_w), and the number of waves N_w = exposure / T_p
+/// (Rayleigh amplitudes; Longuet-Higgins 1952).
+fn largest_amplitude(hs: f64, exposure_h: f64, tp: f64) -> (f64, f64) {
+    let waves = (exposure_h * 3600.0 / tp).max(1.0);
+    (0.25 * hs * (2.0 * waves.ln()).sqrt(), waves)
+}
+
+/// The design events of one irregular sea whose profile wave is larger than the sea's largest
+/// ([`amplitude_warning`]): the sea's name, Hs, exposure, T_p and each event's (station, speed, amplitude).
+#[derive(Debug, Default)]
+struct Oversized {
+    sea: String,
+    hs: f64,
+    exposure_h: f64,
+    tp: f64,
+    events: Vec<(f64, f64, f64)>,
+}
+
+impl Oversized {
+    /// One warning line for all of the sea's events: the single event's own wording, or the ranges and
+    /// the list of (station, speed, amplitude) where there are several (they share the cause).
+    fn warning(&self) -> Option<String> {
+        let (hs, h, tp) = (self.hs, self.exposure_h, self.tp);
+        match self.events.as_slice() {
+            [] => None,
+            [(st, u, zeta)] => amplitude_warning(*zeta, hs, h, tp).map(|w| {
+                format!(
+                    "design event at station {st} Lpp, {u:.3} m/s, sea {}: {w}",
+                    self.sea
+                )
+            }),
+            many => {
+                let (largest, waves) = largest_amplitude(hs, h, tp);
+                let range = |f: &dyn Fn(&(f64, f64, f64)) -> f64| {
+                    many.iter()
+                        .map(f)
+                        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
+                            (a.min(x), b.max(x))
+                        })
+                };
+                let (z0, z1) = range(&|e| e.2);
+                let list: Vec<String> = many
+                    .iter()
+                    .map(|(st, u, z)| format!("{st} Lpp at {u:.3} m/s: {z:.2} m"))
+                    .collect();
+                Some(format!(
+                    "design events of sea {}, {} of them: their profiles' regular wave at the spectral peak \
+                     period {tp:.2} s needs amplitudes of {z0:.2} to {z1:.2} m to give the design entry \
+                     velocities, {:.1} to {:.1} times the most probable largest wave amplitude of the exposure \
+                     ({largest:.2} m: Hs {hs:.2} m, {waves:.0} waves of T_p): the relative motion at T_p is \
+                     small for this hull, so the profiles' deceleration after keel entry is a stand-in (slower \
+                     than the sea's slams); the entry velocities come from the slam statistics and are not \
+                     affected ({})",
+                    self.sea,
+                    many.len(),
+                    z0 / largest,
+                    z1 / largest,
+                    list.join("; ")
+                ))
+            }
+        }
+    }
 }
 
 /// The keel-entry profile of the regular wave (relative motion `rm` per unit amplitude, encounter frequency
@@ -163,10 +227,25 @@ pub(crate) fn plan_events(
     use crate::seakeeping::strip_theory::{StripSettings, respond};
     let mut events = Vec::new();
     let mut notes = Vec::new();
+    // the oversized profile waves, by sea, stated once a sea after the loop
+    let mut oversized: Vec<Oversized> = Vec::new();
     for sp in &p.motions.speeds {
         for (ir, sea) in sp.irregular.iter().zip(&p.sea.irregular) {
             let omega_p = sea.spectrum.peak_frequency();
             let tp = 2.0 * std::f64::consts::PI / omega_p;
+            let k_sea = match oversized.iter().position(|o| o.sea == ir.sea) {
+                Some(k) => k,
+                None => {
+                    oversized.push(Oversized {
+                        sea: ir.sea.clone(),
+                        hs: sea.spectrum.hs(),
+                        exposure_h: ir.duration_h,
+                        tp,
+                        events: Vec::new(),
+                    });
+                    oversized.len() - 1
+                }
+            };
             let r = respond(p.model, omega_p, sp.speed_m_s, &StripSettings::default())?;
             for (st, stats) in p.stations.iter().zip(&ir.stations) {
                 let label = format!("{}/design", ir.sea);
@@ -198,11 +277,10 @@ pub(crate) fn plan_events(
                     ));
                     continue;
                 };
-                if let Some(w) = amplitude_warning(zeta, sea.spectrum.hs(), ir.duration_h, tp) {
-                    notes.push(format!(
-                        "design event at station {} Lpp, {:.3} m/s, sea {}: {w}",
-                        st.aft_of_fp, sp.speed_m_s, ir.sea
-                    ));
+                if amplitude_warning(zeta, sea.spectrum.hs(), ir.duration_h, tp).is_some() {
+                    oversized[k_sea]
+                        .events
+                        .push((st.aft_of_fp, sp.speed_m_s, zeta));
                 }
                 let design = DesignEvent {
                     sea: ir.sea.clone(),
@@ -244,6 +322,7 @@ pub(crate) fn plan_events(
             }
         }
     }
+    notes.extend(oversized.iter().filter_map(Oversized::warning));
     Ok((events, notes))
 }
 
@@ -323,5 +402,35 @@ mod tests {
         );
         assert!(amplitude_warning(4.0, 5.5, 3.0, 11.0).is_none());
         assert!(amplitude_warning(f64::NAN, 5.5, 3.0, 11.0).is_none());
+    }
+
+    /// The oversized profile waves of one sea are stated in one line with their ranges and every event;
+    /// a single one keeps the event's own wording.
+    #[test]
+    fn oversized_profile_waves_of_a_sea_are_stated_once() {
+        let mut o = Oversized {
+            sea: "SS6".into(),
+            hs: 5.5,
+            exposure_h: 3.0,
+            tp: 11.0,
+            events: vec![(0.05, 4.116, 34.04)],
+        };
+        let one = o.warning().unwrap();
+        assert!(
+            one.starts_with("design event at station 0.05 Lpp, 4.116 m/s, sea SS6: its profile's"),
+            "{one}"
+        );
+        o.events.push((0.2, 10.289, 29.14));
+        let two = o.warning().unwrap();
+        assert!(
+            two.starts_with("design events of sea SS6, 2 of them"),
+            "{two}"
+        );
+        assert!(two.contains("29.14 to 34.04 m"), "{two}");
+        // 29.14 / 5.10 and 34.04 / 5.10
+        assert!(two.contains("5.7 to 6.7 times"), "{two}");
+        assert!(two.contains("0.2 Lpp at 10.289 m/s: 29.14 m"), "{two}");
+        o.events.clear();
+        assert!(o.warning().is_none());
     }
 }

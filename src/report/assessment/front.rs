@@ -304,7 +304,7 @@ pub fn warnings(saved: &Saved) -> Vec<(String, Vec<String>)> {
     all.retain(|w| seen.insert(w.clone()));
     let kinds: [(&str, &[&str]); 7] = [
         ("Failed runs", &["failed", "stopped early"]),
-        ("Entry velocities", &["keel-slope"]),
+        ("Entry velocities", &["keel-slope", "design event"]),
         ("Chines", &["has a chine"]),
         (
             "Air cushion / low deadrise",
