@@ -302,49 +302,59 @@ pub fn warnings(saved: &Saved) -> Vec<(String, Vec<String>)> {
         .collect();
     let mut seen = std::collections::BTreeSet::new();
     all.retain(|w| seen.insert(w.clone()));
-    let kinds: [(&str, &[&str]); 7] = [
-        ("Failed runs", &["failed", "stopped early"]),
-        ("Entry velocities", &["keel-slope", "design event"]),
-        ("Chines", &["has a chine"]),
-        (
-            "Air cushion / low deadrise",
-            &["air", "cushion", "single-phase", "deadrise"],
-        ),
-        (
-            "Resolution and convergence",
-            &[
-                "converged",
-                "resolution",
-                "narrower",
-                "spacing",
-                "under-resolved",
-            ],
-        ),
-        ("Analytic estimates", &["analytic", "wagner"]),
-        ("Other", &[""]),
-    ];
     let mut out: Vec<(String, Vec<String>)> = Vec::new();
     for w in all {
-        let l = w.to_lowercase();
-        // a convergence statement names the panel's local deadrise too: it is filed by its GCI
-        let k = if l.contains("gci") {
-            kinds
-                .iter()
-                .position(|(n, _)| *n == "Resolution and convergence")
-                .unwrap_or(kinds.len() - 1)
-        } else {
-            kinds
-                .iter()
-                .position(|(_, keys)| keys.iter().any(|key| l.contains(key)))
-                .unwrap_or(kinds.len() - 1)
-        };
-        match out.iter_mut().find(|(n, _)| n == kinds[k].0) {
+        let k = heading_of(&w);
+        match out.iter_mut().find(|(n, _)| n == WARNING_HEADINGS[k].0) {
             Some((_, v)) => v.push(w),
-            None => out.push((kinds[k].0.to_string(), vec![w])),
+            None => out.push((WARNING_HEADINGS[k].0.to_string(), vec![w])),
         }
     }
-    out.sort_by_key(|(n, _)| kinds.iter().position(|(k, _)| k == n));
+    out.sort_by_key(|(n, _)| WARNING_HEADINGS.iter().position(|(k, _)| k == n));
     out
+}
+
+/// The headings of the report's warnings, in their order, each with the words (lower case) that file a
+/// warning under it; the first heading with a match takes it, and "Other" takes the rest.
+const WARNING_HEADINGS: [(&str, &[&str]); 8] = [
+    ("Failed runs", &["failed", "stopped early"]),
+    // a larger pressure after the impact: a load case of its own, not a slamming pressure
+    ("Loads after the impact", &["comes after the impact"]),
+    ("Entry velocities", &["keel-slope", "design event"]),
+    ("Chines", &["has a chine"]),
+    (
+        "Air cushion / low deadrise",
+        &["air", "cushion", "single-phase", "deadrise"],
+    ),
+    (
+        "Resolution and convergence",
+        &[
+            "converged",
+            "resolution",
+            "narrower",
+            "spacing",
+            "under-resolved",
+        ],
+    ),
+    ("Analytic estimates", &["analytic", "wagner"]),
+    ("Other", &[""]),
+];
+
+/// The index in [`WARNING_HEADINGS`] of the heading warning `w` is filed under.
+fn heading_of(w: &str) -> usize {
+    let l = w.to_lowercase();
+    let other = WARNING_HEADINGS.len() - 1;
+    // a convergence statement names the panel's local deadrise too: it is filed by its GCI
+    if l.contains("gci") {
+        return WARNING_HEADINGS
+            .iter()
+            .position(|(n, _)| *n == "Resolution and convergence")
+            .unwrap_or(other);
+    }
+    WARNING_HEADINGS
+        .iter()
+        .position(|(_, keys)| keys.iter().any(|key| l.contains(key)))
+        .unwrap_or(other)
 }
 
 pub fn summary(r: &mut Report, saved: &Saved) {
@@ -592,6 +602,29 @@ mod tests {
         assert_eq!(a, b);
         assert_ne!(b, c);
         assert_eq!(shape("at t = 0.19 s;"), "at t = # s;");
+    }
+
+    #[test]
+    fn warnings_are_filed_under_their_headings() {
+        let heading = |w: &str| WARNING_HEADINGS[heading_of(w)].0;
+        assert_eq!(
+            heading(
+                "sensors S093-1 (4.02 kPa at 0.081 s): the largest SPH pressure comes after the impact, \
+                 in the immersion phase"
+            ),
+            "Loads after the impact"
+        );
+        assert_eq!(
+            heading("design events of sea SS6, 16 of them: their profiles' regular wave"),
+            "Entry velocities"
+        );
+        assert_eq!(
+            heading(
+                "sensor S093-2 raw: -40.4 % change; GCI 121.1 %; a side of 46.3 deg local deadrise"
+            ),
+            "Resolution and convergence"
+        );
+        assert_eq!(heading("something else entirely"), "Other");
     }
 
     #[test]
