@@ -114,7 +114,7 @@ fn largest_amplitude(hs: f64, exposure_h: f64, tp: f64) -> (f64, f64) {
 /// The design events of one irregular sea whose profile wave is larger than the sea's largest
 /// ([`amplitude_warning`]): the sea's name, Hs, exposure, T_p and each event's (station, speed, amplitude).
 #[derive(Debug, Default)]
-struct Oversized {
+pub(crate) struct Oversized {
     sea: String,
     hs: f64,
     exposure_h: f64,
@@ -215,115 +215,170 @@ pub fn scaled_entry(
 
 /// The design events of every irregular sea, speed and station of a plan (appended after the regular
 /// waves' events, in the order speed, sea, station), and warning lines: one per station without a design
-/// event (why), and one per event whose profile wave is larger than the sea's largest
+/// event (why), and one per sea whose profile waves are larger than its largest
 /// ([`amplitude_warning`]).
 pub(crate) fn plan_events(
     p: &PlanInputs,
     basis: Basis,
 ) -> crate::error::Result<(Vec<super::plan::Event>, Vec<String>)> {
-    use super::plan::{EntryCase, Event};
-    use crate::report::sanity::SlamFlag;
-    use crate::seakeeping::relative_motion::at_station;
     use crate::seakeeping::strip_theory::{StripSettings, respond};
     let mut events = Vec::new();
     let mut notes = Vec::new();
-    // the oversized profile waves, by sea, stated once a sea after the loop
     let mut oversized: Vec<Oversized> = Vec::new();
     for sp in &p.motions.speeds {
         for (ir, sea) in sp.irregular.iter().zip(&p.sea.irregular) {
-            let omega_p = sea.spectrum.peak_frequency();
-            let tp = 2.0 * std::f64::consts::PI / omega_p;
-            let k_sea = match oversized.iter().position(|o| o.sea == ir.sea) {
-                Some(k) => k,
-                None => {
-                    oversized.push(Oversized {
-                        sea: ir.sea.clone(),
-                        hs: sea.spectrum.hs(),
-                        exposure_h: ir.duration_h,
-                        tp,
-                        events: Vec::new(),
-                    });
-                    oversized.len() - 1
-                }
+            let r = respond(
+                p.model,
+                sea.spectrum.peak_frequency(),
+                sp.speed_m_s,
+                &StripSettings::default(),
+            )?;
+            let at = SeaSpeed {
+                speed_m_s: sp.speed_m_s,
+                sea,
+                exposure_h: ir.duration_h,
+                stats: &ir.stations,
+                response: &r,
             };
-            let r = respond(p.model, omega_p, sp.speed_m_s, &StripSettings::default())?;
-            for (st, stats) in p.stations.iter().zip(&ir.stations) {
-                let label = format!("{}/design", ir.sea);
-                let Some((v, n)) = design_velocity(stats, ir.duration_h, basis) else {
-                    notes.push(format!(
-                        "no design event at station {} Lpp, {:.3} m/s, sea {}: {:.2} slams expected in {} h \
-                         (fewer than one)",
-                        st.aft_of_fp,
-                        sp.speed_m_s,
-                        ir.sea,
-                        stats.slams_per_hour * ir.duration_h,
-                        ir.duration_h
-                    ));
-                    continue;
-                };
-                let rm = at_station(&r, st.x, 1.0)?;
-                // The regular wave gives the oscillating part; the keel-slope term (0 when off) is added
-                // to the profile after it.
-                let v_s = stats.steady_velocity;
-                let scaled = scaled_entry(&rm, r.omega_e, st.draft, st.height, v - v_s, 41);
-                let Some((zeta, k)) = scaled.map(|(z, mut k)| {
-                    k.add_steady_velocity(v_s);
-                    (z, k)
-                }) else {
-                    notes.push(format!(
-                        "no design event at station {} Lpp, {:.3} m/s, sea {}: no regular wave at the spectral \
-                         peak period gives the design entry velocity {v:.3} m/s",
-                        st.aft_of_fp, sp.speed_m_s, ir.sea
-                    ));
-                    continue;
-                };
-                if amplitude_warning(zeta, sea.spectrum.hs(), ir.duration_h, tp).is_some() {
-                    oversized[k_sea]
-                        .events
-                        .push((st.aft_of_fp, sp.speed_m_s, zeta));
-                }
-                let design = DesignEvent {
-                    sea: ir.sea.clone(),
-                    definition: definition(basis, n, ir.duration_h, tp),
-                    exposure_h: ir.duration_h,
-                    slams_per_hour: stats.slams_per_hour,
-                    expected_slams: n,
-                    risk_level: match basis {
-                        Basis::RiskLevel(a) => Some(a),
-                        Basis::MostProbableLargest => None,
-                    },
-                    threshold_velocity_m_per_s: stats.threshold_velocity,
-                    design_entry_velocity_m_per_s: v,
-                    keel_slope_velocity_m_per_s: v_s,
-                    peak_period_s: tp,
-                    equivalent_wave_amplitude_m: zeta,
-                };
-                events.push(Event {
-                    station: st.aft_of_fp,
-                    x: st.x,
-                    speed_m_s: sp.speed_m_s,
-                    wave: label,
-                    flag: SlamFlag::Slam,
-                    entry_velocity_m_s: Some(k.entry_velocity),
-                    entry_time_s: None,
-                    encounter_period_s: 2.0 * std::f64::consts::PI / r.omega_e,
-                    wave_omega_rad_s: omega_p,
-                    wave_amplitude_m: zeta,
-                    draft_m: st.draft,
-                    entry: Some(EntryCase {
-                        half_points: p.hull.section_at(st.x)?.points.clone(),
-                        motion: crate::impact::entry_motion(&k),
-                        sensors: p.sensors_at(st.aft_of_fp),
-                        immersion_m: 0.0,
-                    }),
-                    design: Some(design),
-                    flare: None,
-                });
-            }
+            let sensors_at = |f: f64| p.sensors_at(f);
+            events.extend(sea_events(
+                p.hull,
+                p.stations,
+                &sensors_at,
+                &at,
+                basis,
+                &mut notes,
+                &mut oversized,
+            )?);
         }
     }
-    notes.extend(oversized.iter().filter_map(Oversized::warning));
+    notes.extend(oversized_warnings(&oversized));
     Ok((events, notes))
+}
+
+/// One speed in one irregular sea, as [`sea_events`] needs it: the sea, its exposure (h), the stations'
+/// slam statistics at that speed, and the strip-theory response at the sea's spectral peak frequency.
+pub(crate) struct SeaSpeed<'a> {
+    pub speed_m_s: f64,
+    pub sea: &'a crate::sea::IrregularSea,
+    pub exposure_h: f64,
+    pub stats: &'a [SlamStatistics],
+    pub response: &'a crate::seakeeping::strip_theory::Response,
+}
+
+/// The design events of the stations (`stations`, their sensors from `sensors_at`) at one speed in one
+/// irregular sea, in station order: `assess` ([`plan_events`]) and the analytic cases of a sweep make
+/// them the same way. A station without a design event gets a line in `notes` (why); one whose profile
+/// wave is larger than the sea's largest is added to the sea's entry of `oversized`, whose warnings the
+/// caller states once it has all its speeds ([`oversized_warnings`]).
+pub(crate) fn sea_events(
+    hull: &crate::hull::Hull,
+    stations: &[crate::seakeeping::analysis::Station],
+    sensors_at: &dyn Fn(f64) -> Vec<crate::sph::SensorSpec>,
+    at: &SeaSpeed,
+    basis: Basis,
+    notes: &mut Vec<String>,
+    oversized: &mut Vec<Oversized>,
+) -> crate::error::Result<Vec<super::plan::Event>> {
+    use super::plan::{EntryCase, Event};
+    use crate::report::sanity::SlamFlag;
+    use crate::seakeeping::relative_motion::at_station;
+    let (sea, r) = (at.sea, at.response);
+    let omega_p = sea.spectrum.peak_frequency();
+    let tp = 2.0 * std::f64::consts::PI / omega_p;
+    let k_sea = match oversized.iter().position(|o| o.sea == sea.name) {
+        Some(k) => k,
+        None => {
+            oversized.push(Oversized {
+                sea: sea.name.clone(),
+                hs: sea.spectrum.hs(),
+                exposure_h: at.exposure_h,
+                tp,
+                events: Vec::new(),
+            });
+            oversized.len() - 1
+        }
+    };
+    let mut events = Vec::new();
+    for (st, stats) in stations.iter().zip(at.stats) {
+        let label = format!("{}/design", sea.name);
+        let Some((v, n)) = design_velocity(stats, at.exposure_h, basis) else {
+            notes.push(format!(
+                "no design event at station {} Lpp, {:.3} m/s, sea {}: {:.2} slams expected in {} h \
+                 (fewer than one)",
+                st.aft_of_fp,
+                at.speed_m_s,
+                sea.name,
+                stats.slams_per_hour * at.exposure_h,
+                at.exposure_h
+            ));
+            continue;
+        };
+        let rm = at_station(r, st.x, 1.0)?;
+        // The regular wave gives the oscillating part; the keel-slope term (0 when off) is added to the
+        // profile after it.
+        let v_s = stats.steady_velocity;
+        let scaled = scaled_entry(&rm, r.omega_e, st.draft, st.height, v - v_s, 41);
+        let Some((zeta, k)) = scaled.map(|(z, mut k)| {
+            k.add_steady_velocity(v_s);
+            (z, k)
+        }) else {
+            notes.push(format!(
+                "no design event at station {} Lpp, {:.3} m/s, sea {}: no regular wave at the spectral \
+                 peak period gives the design entry velocity {v:.3} m/s",
+                st.aft_of_fp, at.speed_m_s, sea.name
+            ));
+            continue;
+        };
+        if amplitude_warning(zeta, sea.spectrum.hs(), at.exposure_h, tp).is_some() {
+            oversized[k_sea]
+                .events
+                .push((st.aft_of_fp, at.speed_m_s, zeta));
+        }
+        let design = DesignEvent {
+            sea: sea.name.clone(),
+            definition: definition(basis, n, at.exposure_h, tp),
+            exposure_h: at.exposure_h,
+            slams_per_hour: stats.slams_per_hour,
+            expected_slams: n,
+            risk_level: match basis {
+                Basis::RiskLevel(a) => Some(a),
+                Basis::MostProbableLargest => None,
+            },
+            threshold_velocity_m_per_s: stats.threshold_velocity,
+            design_entry_velocity_m_per_s: v,
+            keel_slope_velocity_m_per_s: v_s,
+            peak_period_s: tp,
+            equivalent_wave_amplitude_m: zeta,
+        };
+        events.push(Event {
+            station: st.aft_of_fp,
+            x: st.x,
+            speed_m_s: at.speed_m_s,
+            wave: label,
+            flag: SlamFlag::Slam,
+            entry_velocity_m_s: Some(k.entry_velocity),
+            entry_time_s: None,
+            encounter_period_s: 2.0 * std::f64::consts::PI / r.omega_e,
+            wave_omega_rad_s: omega_p,
+            wave_amplitude_m: zeta,
+            draft_m: st.draft,
+            entry: Some(EntryCase {
+                half_points: hull.section_at(st.x)?.points.clone(),
+                motion: crate::impact::entry_motion(&k),
+                sensors: sensors_at(st.aft_of_fp),
+                immersion_m: 0.0,
+            }),
+            design: Some(design),
+            flare: None,
+        });
+    }
+    Ok(events)
+}
+
+/// The warnings of the oversized profile waves [`sea_events`] collected, one a sea.
+pub(crate) fn oversized_warnings(oversized: &[Oversized]) -> Vec<String> {
+    oversized.iter().filter_map(Oversized::warning).collect()
 }
 
 /// What [`plan_events`] needs of a plan in the making.

@@ -117,7 +117,7 @@ fn summary(r: &SweepResult) -> String {
     };
     s += &format!("\nbest variants ({}):\n", content.best_rule);
     if content.best_rows.is_empty() {
-        s += "  none meets the limits\n";
+        s += &format!("  {}\n", content.no_best);
     } else {
         s += &format!("  {}\n", content.best_header.join("  "));
         for row in &content.best_rows {

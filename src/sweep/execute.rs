@@ -109,8 +109,35 @@ fn analytic_case(
     for &u in &cs.speeds {
         planned.extend(vm.events(&v.hull, u, &cs.regular)?);
     }
+    // the irregular seas' slam statistics and design events, after the regular waves' as in `assess`
+    let mut stats: Vec<Stats> = vec![None; p.stations.len()];
+    let (mut notes, mut oversized) = (Vec::new(), Vec::new());
+    for &u in &cs.speeds {
+        for sea in &cs.irregular {
+            let key = (p.case_variant[i], u.to_bits(), sea.name.clone());
+            let known = memo.lock().ok().and_then(|m| m.get(&key).cloned());
+            let st = match known {
+                Some(st) => st,
+                None => {
+                    let st = vm.statistics(u, sea)?;
+                    if let Ok(mut m) = memo.lock() {
+                        m.insert(key, st.clone());
+                    }
+                    st
+                }
+            };
+            for (k, s) in st.iter().enumerate() {
+                if stats[k].is_none_or(|(pr, _)| s.probability > pr) {
+                    stats[k] = Some((s.probability, s.slams_per_hour));
+                }
+            }
+            planned.extend(vm.design_events(&v.hull, u, sea, &st, &mut notes, &mut oversized)?);
+        }
+    }
+    notes.extend(assess::design_event::oversized_warnings(&oversized));
     // over all the case's speeds at once, as `assess` states them
-    let case_warnings = assess::keel_slope::lines(&vm.stations, &planned, vm.keel_slope_term);
+    let mut case_warnings = assess::keel_slope::lines(&vm.stations, &planned, vm.keel_slope_term);
+    case_warnings.extend(notes);
     let mut events = Vec::new();
     for e in planned {
         // in the loading's water, as `assess` does (sea water 1025 kg/m3 for most hulls)
@@ -147,30 +174,8 @@ fn analytic_case(
                 .as_ref()
                 .map(|_| crate::assess::plan::kind_of(e.flare.as_ref())),
             flare_event: e.flare.clone(),
-            design_event: None,
+            design_event: e.design.clone(),
         });
-    }
-    let mut stats: Vec<Stats> = vec![None; p.stations.len()];
-    for &u in &cs.speeds {
-        for sea in &cs.irregular {
-            let key = (p.case_variant[i], u.to_bits(), sea.name.clone());
-            let known = memo.lock().ok().and_then(|m| m.get(&key).cloned());
-            let st = match known {
-                Some(st) => st,
-                None => {
-                    let st = vm.statistics(u, sea)?;
-                    if let Ok(mut m) = memo.lock() {
-                        m.insert(key, st.clone());
-                    }
-                    st
-                }
-            };
-            for (k, s) in st.iter().enumerate() {
-                if stats[k].is_none_or(|(pr, _)| s.probability > pr) {
-                    stats[k] = Some((s.probability, s.slams_per_hour));
-                }
-            }
-        }
     }
     Ok((events, stats, case_warnings))
 }

@@ -9,6 +9,7 @@
 //! Ochi's slam statistics in each irregular sea. Natural periods and RAO tables, which an assessment
 //! prints, are not needed and not computed.
 
+use crate::assess::design_event;
 use crate::assess::plan::{self, Event};
 use crate::error::Result;
 use crate::hull::{Hull, LoadingCondition};
@@ -160,6 +161,52 @@ impl<'a> VariantModel<'a> {
             }
         }
         Ok(events)
+    }
+
+    /// The design events of one speed in an irregular sea whose stations' slam statistics are `stats`,
+    /// made as `assess` makes them ([`design_event::sea_events`], the most probable largest entry
+    /// velocity of the exposure), with the response at the spectral peak from this model's table; lines
+    /// on stations without one go to `notes`, oversized profile waves to `oversized`.
+    pub(crate) fn design_events(
+        &self,
+        hull: &Hull,
+        speed: f64,
+        sea: &IrregularSea,
+        stats: &[SlamStatistics],
+        notes: &mut Vec<String>,
+        oversized: &mut Vec<design_event::Oversized>,
+    ) -> Result<Vec<Event>> {
+        let r = strip_theory::respond(
+            &self.strip.model,
+            sea.spectrum.peak_frequency(),
+            speed,
+            &self.strip.table,
+        )?;
+        let sensors_at = |f: f64| {
+            self.stations
+                .iter()
+                .zip(&self.sensors)
+                .find(|(s, _)| (s.aft_of_fp - f).abs() < 1e-9)
+                .map(|(_, q)| q.clone())
+                .unwrap_or_default()
+        };
+        let at = design_event::SeaSpeed {
+            speed_m_s: speed,
+            sea,
+            // as `seakeeping::analysis` takes it
+            exposure_h: sea.duration_h.unwrap_or(1.0),
+            stats,
+            response: &r,
+        };
+        design_event::sea_events(
+            hull,
+            &self.stations,
+            &sensors_at,
+            &at,
+            design_event::Basis::MostProbableLargest,
+            notes,
+            oversized,
+        )
     }
 
     /// Ochi's slam statistics at the stations for one speed in an irregular sea.

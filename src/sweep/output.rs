@@ -36,6 +36,8 @@ pub struct ReportContent {
     pub best_rule: String,
     pub best_header: Vec<String>,
     pub best_rows: Vec<Vec<String>>,
+    /// Why `best_rows` is empty, when it is ([`results::why_no_best`]).
+    pub no_best: String,
     pub cases: usize,
     pub failed_cases: usize,
 }
@@ -186,6 +188,7 @@ pub fn report_content(r: &SweepResult) -> Result<ReportContent> {
         best_rule: results::rule_text(&r.best),
         best_header,
         best_rows,
+        no_best: results::why_no_best(r, &r.best),
         cases: r.cases.len(),
         failed_cases: r.failed_cases,
     })

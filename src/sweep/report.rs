@@ -65,9 +65,7 @@ pub fn document(r: &SweepResult) -> Result<Document> {
     });
     blocks.push(Block::Strong(content.best_rule.clone()));
     if content.best_rows.is_empty() {
-        blocks.push(Block::Paragraph(
-            "No finished case meets the limits.".into(),
-        ));
+        blocks.push(Block::Paragraph(content.no_best.clone()));
     } else {
         blocks.push(Block::Table {
             caption: format!("The best variants ({}).", content.best_rule),

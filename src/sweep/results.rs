@@ -414,6 +414,31 @@ pub fn best<'a>(r: &'a SweepResult, rule: &Best) -> Vec<&'a CaseResult> {
     ok
 }
 
+/// Why [`best`] is empty, in words: no case finished, none has a value of the objective, or none of
+/// those meets the limits.
+pub fn why_no_best(r: &SweepResult, rule: &Best) -> String {
+    let finished: Vec<&CaseResult> = r.cases.iter().filter(|c| c.failed.is_none()).collect();
+    let what = match rule.minimise {
+        Objective::DesignPressure => "a design pressure",
+        Objective::SectionForce => "a section-force peak",
+        Objective::SlamProbability => "a slam probability (it needs an irregular sea)",
+    };
+    if finished.is_empty() {
+        "No case finished.".into()
+    } else if finished
+        .iter()
+        .all(|c| c.objective(rule.minimise).is_none())
+    {
+        format!(
+            "No finished case has {what}, the quantity the rule ranks by: no station of any case had an \
+             event with a load (no keel entry or flare impact in the sea file's waves, and no irregular \
+             sea with a slam expected)."
+        )
+    } else {
+        "No finished case meets the limits.".into()
+    }
+}
+
 /// The rule in words, for the table's heading.
 pub fn rule_text(rule: &Best) -> String {
     let what = match rule.minimise {
@@ -476,6 +501,43 @@ mod tests {
             failed: None,
             warnings: warnings.iter().map(|w| w.to_string()).collect(),
         }
+    }
+
+    #[test]
+    fn an_empty_best_table_says_why() {
+        let rule = Best {
+            minimise: Objective::DesignPressure,
+            max_slam_probability: None,
+            max_design_pressure_pa: Some(50e3),
+            count: 5,
+        };
+        let mut r = SweepResult {
+            tool: String::new(),
+            provenance: Prov {
+                tool: String::new(),
+                commit: String::new(),
+                inputs: Vec::new(),
+                settings: serde_json::Value::Null,
+            },
+            sweep_hash: String::new(),
+            name: "s".into(),
+            fidelity: "analytic".into(),
+            parameters: Vec::new(),
+            best: rule.clone(),
+            total_cases: 2,
+            shard: None,
+            cases: vec![case("c1", &[]), case("c2", &[])],
+            failed_cases: 0,
+            warnings: Vec::new(),
+        };
+        assert!(best(&r, &rule).is_empty());
+        assert!(why_no_best(&r, &rule).starts_with("No finished case has a design pressure"));
+        r.cases[0].max_design_pressure_pa = Some(80e3);
+        assert_eq!(why_no_best(&r, &rule), "No finished case meets the limits.");
+        for c in &mut r.cases {
+            c.failed = Some("x".into());
+        }
+        assert_eq!(why_no_best(&r, &rule), "No case finished.");
     }
 
     #[test]
