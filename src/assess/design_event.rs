@@ -113,7 +113,7 @@ fn largest_amplitude(hs: f64, exposure_h: f64, tp: f64) -> (f64, f64) {
 
 /// The design events of one irregular sea whose profile wave is larger than the sea's largest
 /// ([`amplitude_warning`]): the sea's name, Hs, exposure, T_p and each event's (station, speed, amplitude).
-#[derive(Debug, Default)]
+#[derive(Debug, Default, Clone)]
 pub(crate) struct Oversized {
     sea: String,
     hs: f64,
@@ -374,6 +374,17 @@ pub(crate) fn sea_events(
         });
     }
     Ok(events)
+}
+
+/// Add the oversized profile waves of `from` to those of the same seas in `into` (a sea not in `into`
+/// yet is appended): the parts [`sea_events`] collected for several speeds, joined.
+pub(crate) fn merge_oversized(into: &mut Vec<Oversized>, from: &[Oversized]) {
+    for o in from {
+        match into.iter_mut().find(|x| x.sea == o.sea) {
+            Some(x) => x.events.extend_from_slice(&o.events),
+            None => into.push(o.clone()),
+        }
+    }
 }
 
 /// The warnings of the oversized profile waves [`sea_events`] collected, one a sea.

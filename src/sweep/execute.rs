@@ -86,29 +86,80 @@ fn blank(p: &Prepared, i: usize) -> CaseResult {
     }
 }
 
-/// Slam statistics already computed, by (variant, speed, irregular sea): they do not depend on the
-/// regular wave, so the cases that differ only in it share them.
-type StatsMemo = std::sync::Mutex<
-    std::collections::HashMap<
-        (usize, u64, String),
-        Vec<crate::seakeeping::slamming::SlamStatistics>,
-    >,
->;
+/// What a case computes for one speed in one irregular sea, which does not depend on its regular waves:
+/// the stations' slam statistics, the design events (as planned, and with their analytic estimates),
+/// the lines on stations without one, and the oversized profile waves.
+#[derive(Clone)]
+struct SeaSpeedPart {
+    stats: Vec<crate::seakeeping::slamming::SlamStatistics>,
+    planned: Vec<assess::Event>,
+    events: Vec<EventResult>,
+    notes: Vec<String>,
+    oversized: Vec<assess::design_event::Oversized>,
+}
+
+/// The [`SeaSpeedPart`]s already computed, by (variant, speed, irregular sea): the cases that differ
+/// only in their regular waves share them.
+type SeaSpeedMemo = std::sync::Mutex<std::collections::HashMap<(usize, u64, String), SeaSpeedPart>>;
+
+/// An event of a sweep's analytic case with its analytic estimate in the loading's water of density
+/// `rho`, as `assess` makes it.
+fn estimated(e: assess::Event, rho: f64) -> EventResult {
+    // in the loading's water, as `assess` does (sea water 1025 kg/m3 for most hulls)
+    let est = e
+        .entry
+        .as_ref()
+        .map(|c| assess::analytic::estimate_in(c, rho));
+    let mut warnings = Vec::new();
+    let analytic = match est {
+        Some(Ok(a)) => {
+            warnings.extend(a.notes.iter().map(|n| format!("analytic: {n}")));
+            Some(a)
+        }
+        Some(Err(err)) => {
+            warnings.push(format!("no analytic estimate: {err}"));
+            None
+        }
+        None => None,
+    };
+    EventResult {
+        station: e.station,
+        x_m: e.x,
+        speed_m_per_s: e.speed_m_s,
+        wave: e.wave.clone(),
+        slam_flag: e.flag,
+        entry_velocity_m_per_s: e.entry_velocity_m_s,
+        analytic,
+        sph: None,
+        run_folder: None,
+        failed: None,
+        warnings,
+        entry_kind: e
+            .entry
+            .as_ref()
+            .map(|_| crate::assess::plan::kind_of(e.flare.as_ref())),
+        flare_event: e.flare.clone(),
+        design_event: e.design.clone(),
+    }
+}
 
 /// An analytic case from its variant's strip theory: its events, its stations' slam statistics and the
-/// case's warnings (the keel-slope term's, as `assess` gives them: [`assess::keel_slope::lines`]).
+/// case's warnings (the keel-slope term's, as `assess` gives them: [`assess::keel_slope::lines`]; the
+/// irregular seas' design events').
 fn analytic_case(
     p: &Prepared,
     i: usize,
     v: &Variant,
     vm: &VariantModel,
     cs: &CaseSea,
-    memo: &StatsMemo,
+    memo: &SeaSpeedMemo,
 ) -> Result<(Vec<EventResult>, Vec<Stats>, Vec<String>)> {
+    let rho = v.loading.rho;
     let mut planned = Vec::new();
     for &u in &cs.speeds {
         planned.extend(vm.events(&v.hull, u, &cs.regular)?);
     }
+    let mut events: Vec<EventResult> = planned.iter().cloned().map(|e| estimated(e, rho)).collect();
     // the irregular seas' slam statistics and design events, after the regular waves' as in `assess`
     let mut stats: Vec<Stats> = vec![None; p.stations.len()];
     let (mut notes, mut oversized) = (Vec::new(), Vec::new());
@@ -116,67 +167,42 @@ fn analytic_case(
         for sea in &cs.irregular {
             let key = (p.case_variant[i], u.to_bits(), sea.name.clone());
             let known = memo.lock().ok().and_then(|m| m.get(&key).cloned());
-            let st = match known {
-                Some(st) => st,
+            let part = match known {
+                Some(part) => part,
                 None => {
-                    let st = vm.statistics(u, sea)?;
+                    let stats = vm.statistics(u, sea)?;
+                    let (mut notes, mut oversized) = (Vec::new(), Vec::new());
+                    let planned =
+                        vm.design_events(&v.hull, u, sea, &stats, &mut notes, &mut oversized)?;
+                    let events = planned.iter().cloned().map(|e| estimated(e, rho)).collect();
+                    let part = SeaSpeedPart {
+                        stats,
+                        planned,
+                        events,
+                        notes,
+                        oversized,
+                    };
                     if let Ok(mut m) = memo.lock() {
-                        m.insert(key, st.clone());
+                        m.insert(key, part.clone());
                     }
-                    st
+                    part
                 }
             };
-            for (k, s) in st.iter().enumerate() {
+            for (k, s) in part.stats.iter().enumerate() {
                 if stats[k].is_none_or(|(pr, _)| s.probability > pr) {
                     stats[k] = Some((s.probability, s.slams_per_hour));
                 }
             }
-            planned.extend(vm.design_events(&v.hull, u, sea, &st, &mut notes, &mut oversized)?);
+            planned.extend(part.planned);
+            events.extend(part.events);
+            notes.extend(part.notes);
+            assess::design_event::merge_oversized(&mut oversized, &part.oversized);
         }
     }
     notes.extend(assess::design_event::oversized_warnings(&oversized));
     // over all the case's speeds at once, as `assess` states them
     let mut case_warnings = assess::keel_slope::lines(&vm.stations, &planned, vm.keel_slope_term);
     case_warnings.extend(notes);
-    let mut events = Vec::new();
-    for e in planned {
-        // in the loading's water, as `assess` does (sea water 1025 kg/m3 for most hulls)
-        let est = e
-            .entry
-            .as_ref()
-            .map(|c| assess::analytic::estimate_in(c, v.loading.rho));
-        let mut warnings = Vec::new();
-        let analytic = match est {
-            Some(Ok(a)) => {
-                warnings.extend(a.notes.iter().map(|n| format!("analytic: {n}")));
-                Some(a)
-            }
-            Some(Err(err)) => {
-                warnings.push(format!("no analytic estimate: {err}"));
-                None
-            }
-            None => None,
-        };
-        events.push(EventResult {
-            station: e.station,
-            x_m: e.x,
-            speed_m_per_s: e.speed_m_s,
-            wave: e.wave.clone(),
-            slam_flag: e.flag,
-            entry_velocity_m_per_s: e.entry_velocity_m_s,
-            analytic,
-            sph: None,
-            run_folder: None,
-            failed: None,
-            warnings,
-            entry_kind: e
-                .entry
-                .as_ref()
-                .map(|_| crate::assess::plan::kind_of(e.flare.as_ref())),
-            flare_event: e.flare.clone(),
-            design_event: e.design.clone(),
-        });
-    }
     Ok((events, stats, case_warnings))
 }
 
@@ -345,7 +371,7 @@ pub fn run(p: &Prepared, opts: &Options, progress: &ProgressHandle) -> Result<Sw
                 })
                 .collect();
             let model_of = |k: usize| models.iter().find(|m| m.0 == k).map(|m| &m.1);
-            let memo = StatsMemo::default();
+            let memo = SeaSpeedMemo::default();
             Ok(todo
                 .par_iter()
                 .filter_map(|&i| {
