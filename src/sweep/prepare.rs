@@ -15,6 +15,12 @@ use crate::error::{Error, InputError, Result};
 use crate::hull::{Hull, LoadingCondition};
 use crate::input::num;
 use crate::provenance::{TOOL, sha256_hex};
+
+/// The version of how a case is computed, part of every case key: a sweep resumed with a build that
+/// computes its cases differently computes them again instead of mixing old and new cases. Raise it with
+/// every such change. 2 (2026-11-30): analytic cases make the irregular seas' design events (before,
+/// their regular waves' events only).
+pub const CASE_RULES: u32 = 2;
 use crate::sea::{IrregularSea, RegularWave, SeaState, Spectrum, breaking_steepness};
 
 /// The speeds and waves of one case.
@@ -425,9 +431,9 @@ pub fn prepare(path: &Path, out: &Path) -> Result<Prepared> {
                 .then_some(models[v.model].band);
             sha256_hex(
                 serde_json::json!({
-                    "tool": TOOL, "hull": hull_sha, "sea": sea_sha, "variant": v.key,
-                    "settings": settings, "params": params, "wave": c.wave.as_ref().map(|w| &w.0),
-                    "speeds": cs.speeds, "band": band,
+                    "tool": TOOL, "rules": CASE_RULES, "hull": hull_sha, "sea": sea_sha,
+                    "variant": v.key, "settings": settings, "params": params,
+                    "wave": c.wave.as_ref().map(|w| &w.0), "speeds": cs.speeds, "band": band,
                 })
                 .to_string()
                 .as_bytes(),
