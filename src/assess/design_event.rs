@@ -91,7 +91,7 @@ pub fn definition(basis: Basis, n: f64, exposure_h: f64, peak_period_s: f64) -> 
 /// is not affected.
 pub fn amplitude_warning(zeta: f64, hs: f64, exposure_h: f64, tp: f64) -> Option<String> {
     let (largest, waves) = largest_amplitude(hs, exposure_h, tp);
-    (zeta.is_finite() && largest > 0.0 && zeta > largest).then(|| {
+    exceeds_largest(zeta, hs, exposure_h, tp).then(|| {
         format!(
             "its profile's regular wave at the spectral peak period {tp:.2} s needs an amplitude of {zeta:.2} m \
              to give the design entry velocity, {:.1} times the most probable largest wave amplitude of the \
@@ -109,6 +109,13 @@ pub fn amplitude_warning(zeta: f64, hs: f64, exposure_h: f64, tp: f64) -> Option
 fn largest_amplitude(hs: f64, exposure_h: f64, tp: f64) -> (f64, f64) {
     let waves = (exposure_h * 3600.0 / tp).max(1.0);
     (0.25 * hs * (2.0 * waves.ln()).sqrt(), waves)
+}
+
+/// Whether a profile wave of amplitude `zeta` is larger than the most probable largest wave amplitude of
+/// the exposure ([`amplitude_warning`] states it).
+fn exceeds_largest(zeta: f64, hs: f64, exposure_h: f64, tp: f64) -> bool {
+    let (largest, _) = largest_amplitude(hs, exposure_h, tp);
+    zeta.is_finite() && largest > 0.0 && zeta > largest
 }
 
 /// The design events of one irregular sea whose profile wave is larger than the sea's largest
@@ -137,14 +144,11 @@ impl Oversized {
             }),
             many => {
                 let (largest, waves) = largest_amplitude(hs, h, tp);
-                let range = |f: &dyn Fn(&(f64, f64, f64)) -> f64| {
-                    many.iter()
-                        .map(f)
-                        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
-                            (a.min(x), b.max(x))
-                        })
-                };
-                let (z0, z1) = range(&|e| e.2);
+                let (z0, z1) = many
+                    .iter()
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), e| {
+                        (a.min(e.2), b.max(e.2))
+                    });
                 let list: Vec<String> = many
                     .iter()
                     .map(|(st, u, z)| format!("{st} Lpp at {u:.3} m/s: {z:.2} m"))
@@ -330,7 +334,7 @@ pub(crate) fn sea_events(
             ));
             continue;
         };
-        if amplitude_warning(zeta, sea.spectrum.hs(), at.exposure_h, tp).is_some() {
+        if exceeds_largest(zeta, sea.spectrum.hs(), at.exposure_h, tp) {
             oversized[k_sea]
                 .events
                 .push((st.aft_of_fp, at.speed_m_s, zeta));

@@ -107,9 +107,11 @@ impl AnalyticPeak {
     pub fn of_sensor(estimate: Option<&SensorEstimate>) -> Self {
         match estimate {
             None => AnalyticPeak::Absent,
-            Some(e) if e.no_peak_after_start => AnalyticPeak::NoPeakAfterStart,
-            Some(e) if e.peak_pa == 0.0 && e.impulse_pa_s == 0.0 => AnalyticPeak::Zero,
-            Some(e) => AnalyticPeak::Peak(e.peak_pa),
+            Some(e) => match e.peak() {
+                None => AnalyticPeak::NoPeakAfterStart,
+                Some(p) if p == 0.0 && e.impulse_pa_s == 0.0 => AnalyticPeak::Zero,
+                Some(p) => AnalyticPeak::Peak(p),
+            },
         }
     }
 }

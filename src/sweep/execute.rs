@@ -159,8 +159,9 @@ fn analytic_case(
     for &u in &cs.speeds {
         planned.extend(vm.events(&v.hull, u, &cs.regular)?);
     }
-    let mut events: Vec<EventResult> = planned.iter().cloned().map(|e| estimated(e, rho)).collect();
+    let regular = planned.len();
     // the irregular seas' slam statistics and design events, after the regular waves' as in `assess`
+    let mut design = Vec::new();
     let mut stats: Vec<Stats> = vec![None; p.stations.len()];
     let (mut notes, mut oversized) = (Vec::new(), Vec::new());
     for &u in &cs.speeds {
@@ -194,7 +195,7 @@ fn analytic_case(
                 }
             }
             planned.extend(part.planned);
-            events.extend(part.events);
+            design.extend(part.events);
             notes.extend(part.notes);
             assess::design_event::merge_oversized(&mut oversized, &part.oversized);
         }
@@ -203,6 +204,10 @@ fn analytic_case(
     // over all the case's speeds at once, as `assess` states them
     let mut case_warnings = assess::keel_slope::lines(&vm.stations, &planned, vm.keel_slope_term);
     case_warnings.extend(notes);
+    // the regular waves' events get their estimates here; the design events have theirs from the memo
+    planned.truncate(regular);
+    let mut events: Vec<EventResult> = planned.into_iter().map(|e| estimated(e, rho)).collect();
+    events.extend(design);
     Ok((events, stats, case_warnings))
 }
 
