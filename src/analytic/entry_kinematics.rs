@@ -39,7 +39,7 @@
 
 use crate::analytic::section_profile::{Profile, ProfileEnd};
 use crate::error::{Error, Result};
-use crate::numerics::Pchip;
+use crate::numerics::{Pchip, bisect};
 
 /// Speed of sound in water (m/s) used for the acoustic-stage test and the water-hammer pressure.
 pub const WATER_SOUND_SPEED: f64 = 1500.0;
@@ -187,21 +187,16 @@ impl EntryHistory {
             // wetted to the end of f.
             return Some(self.profile.y_end());
         }
-        // d(c_grid[k-1]) <= h < d(c_grid[k]): bisection on d.
-        let (mut lo, mut hi) = (self.c_grid[k - 1], self.c_grid[k]);
-        for _ in 0..80 {
-            let mid = 0.5 * (lo + hi);
-            if self
-                .wetting
-                .wagner_depth(mid)
+        // Whether the penetration at half-width c exceeds h (past the end of f counts as beyond; a NaN
+        // depth does not).
+        let beyond = |c: f64| {
+            self.wetting
+                .wagner_depth(c)
                 .map_or(f64::INFINITY, |d| d + self.immersion)
                 > h
-            {
-                hi = mid;
-            } else {
-                lo = mid;
-            }
-        }
+        };
+        // d(c_grid[k-1]) <= h < d(c_grid[k]): bisection on d.
+        let (_, hi) = bisect(self.c_grid[k - 1], self.c_grid[k], 80, |mid| !beyond(mid));
         // Snap to the grid point below (a flat keel's edge, the keel itself) when within round-off.
         let lo0 = self.c_grid[k - 1];
         Some(if hi - lo0 <= 1e-12 * self.profile.y_end() {

@@ -129,7 +129,17 @@ pub fn estimate_immersed(
     v: &[f64],
     rho: f64,
 ) -> Result<WagnerEstimate> {
-    let hist = EntryHistory::new_immersed(half, d0, t, v)?;
+    Ok(estimate_from_history(
+        &EntryHistory::new_immersed(half, d0, t, v)?,
+        d0,
+        rho,
+    ))
+}
+
+/// [`estimate_immersed`] along an entry history already computed ([`EntryHistory::new_immersed`] with
+/// the same keel depth `d0`), so that an estimate that also needs the MLM of the same history computes
+/// it once.
+pub fn estimate_from_history(hist: &EntryHistory, d0: f64, rho: f64) -> WagnerEstimate {
     let mut out = WagnerEstimate {
         flat_keel_half_width: hist.profile.flat_keel_half_width(),
         singular_start: d0 > 0.0 || hist.profile.flat_keel_half_width() > 0.0,
@@ -191,7 +201,7 @@ pub fn estimate_immersed(
             out.t.len()
         ));
     }
-    Ok(out)
+    out
 }
 
 #[cfg(test)]

@@ -49,6 +49,7 @@
 
 use crate::analytic::entry_kinematics::{EntryHistory, EntryState, WATER_SOUND_SPEED};
 use crate::error::Result;
+use crate::numerics::bisect;
 use crate::numerics::quadrature::gauss_legendre;
 use std::f64::consts::FRAC_PI_2;
 
@@ -78,7 +79,17 @@ impl Mlm {
         v: &[f64],
         rho: f64,
     ) -> Result<Self> {
-        let hist = EntryHistory::new_immersed(half, d0, t, v)?;
+        Ok(Self::with_history(
+            half,
+            EntryHistory::new_immersed(half, d0, t, v)?,
+            rho,
+        ))
+    }
+
+    /// The MLM along an entry history already computed for the section `half`
+    /// ([`EntryHistory::new_immersed`] of the same `half`), so that an estimate that also needs the
+    /// Wagner values of the same history computes it once.
+    pub fn with_history(half: &[[f64; 2]], hist: EntryHistory, rho: f64) -> Self {
         let z0 = half[0][1];
         let mut contour: Vec<[f64; 3]> = vec![[half[0][0], 0.0, 0.0]];
         for p in &half[1..] {
@@ -86,12 +97,12 @@ impl Mlm {
             let l = (p[0] - last[0]).hypot(p[1] - z0 - last[1]);
             contour.push([p[0], p[1] - z0, last[2] + l]);
         }
-        Ok(Self {
+        Self {
             hist,
             rho,
             contour,
             gl: gauss_legendre(6),
-        })
+        }
     }
 
     /// The entry history (times, penetration, c, dc/dt, why it stopped).
@@ -118,8 +129,8 @@ impl Mlm {
             return None;
         }
         let u = r.sqrt();
-        let f = self.hist.profile.height(x)?;
-        let fp = self.hist.profile.slope(x);
+        let (f, fp) = self.hist.profile.height_and_slope(x);
+        let f = f?;
         let vv = s.v * s.v;
         Some(
             self.rho
@@ -167,27 +178,34 @@ impl Mlm {
         }
         let x_of = |w: f64| s.c * (1.0 - w * w).max(0.0).sqrt();
         let p_of = |w: f64| self.pressure(s, x_of(w));
-        let n = 600;
-        let w_at = |k: usize| 10f64.powf(-9.0 * (1.0 - k as f64 / n as f64));
+        let grid = peak_grid();
+        let n = PEAK_GRID;
+        let w_at = |k: usize| grid[k];
+        let on_grid: Vec<f64> = (0..=n).map(|k| p_of(w_at(k))).collect();
         let k_best = (0..=n)
-            .max_by(|&a, &b| p_of(w_at(a)).total_cmp(&p_of(w_at(b))))
+            .max_by(|&a, &b| on_grid[a].total_cmp(&on_grid[b]))
             .unwrap_or(n);
         let (mut a, mut b) = (w_at(k_best.saturating_sub(1)), w_at((k_best + 1).min(n)));
         let g = 0.5 * (5f64.sqrt() - 1.0);
         for _ in 0..80 {
             let (m1, m2) = (b - g * (b - a), a + g * (b - a));
-            if p_of(m1) > p_of(m2) {
-                b = m2;
+            let next = if p_of(m1) > p_of(m2) {
+                (a, m2)
             } else {
-                a = m1;
+                (m1, b)
+            };
+            // An iteration that leaves the bracket as it was leaves it so for good.
+            if next == (a, b) {
+                break;
             }
+            (a, b) = next;
         }
         let w = 0.5 * (a + b);
         let (x, p) = (x_of(w), p_of(w));
-        if p >= p_of(w_at(k_best)) {
+        if p >= on_grid[k_best] {
             (x, p)
         } else {
-            (x_of(w_at(k_best)), p_of(w_at(k_best)))
+            (x_of(w_at(k_best)), on_grid[k_best])
         }
     }
 
@@ -203,9 +221,7 @@ impl Mlm {
         let g = |th: f64| self.pressure(s, s.c * th.sin()) * th.cos();
         let sign = |th: f64| self.pressure_unclipped(s, s.c * th.sin()).unwrap_or(-1.0) > 0.0;
         // Panel ends: log-spaced in cos(theta) towards the contact point, and the vertices of f.
-        let mut ends: Vec<f64> = (0..=80)
-            .map(|k| (10f64.powf(-9.0 * k as f64 / 80.0)).acos())
-            .collect();
+        let mut ends: Vec<f64> = force_grid().to_vec();
         ends.extend(
             self.hist
                 .profile
@@ -217,20 +233,14 @@ impl Mlm {
         ends.push(FRAC_PI_2);
         ends.sort_by(f64::total_cmp);
         ends.dedup();
+        let signs: Vec<bool> = ends.iter().map(|&e| sign(e)).collect();
         let mut sum = 0.0;
-        for w in ends.windows(2) {
+        for (w, sw) in ends.windows(2).zip(signs.windows(2)) {
             let (a, b) = (w[0], w[1]);
             let mut cuts = vec![a];
-            if sign(a) != sign(b) {
-                let (mut lo, mut hi) = (a, b);
-                for _ in 0..60 {
-                    let mid = 0.5 * (lo + hi);
-                    if sign(mid) == sign(a) {
-                        lo = mid;
-                    } else {
-                        hi = mid;
-                    }
-                }
+            let sa = sw[0];
+            if sa != sw[1] {
+                let (lo, hi) = bisect(a, b, 60, |mid| sign(mid) == sa);
                 cuts.push(0.5 * (lo + hi));
             }
             cuts.push(b);
@@ -325,6 +335,24 @@ impl Mlm {
             .map(|s| self.sensor_mean(s, s1, s2))
             .collect()
     }
+}
+
+/// Intervals of the peak search's grid in w = sqrt(1 - x^2/c^2) ([`Mlm::peak`]).
+const PEAK_GRID: usize = 600;
+
+/// The grid of the peak search, w_k = 10^(-9 (1 - k / [`PEAK_GRID`])), computed once.
+fn peak_grid() -> &'static [f64; PEAK_GRID + 1] {
+    static GRID: std::sync::OnceLock<[f64; PEAK_GRID + 1]> = std::sync::OnceLock::new();
+    GRID.get_or_init(|| {
+        std::array::from_fn(|k| 10f64.powf(-9.0 * (1.0 - k as f64 / PEAK_GRID as f64)))
+    })
+}
+
+/// Log-spaced panel ends of the force quadrature ([`Mlm::force`]), theta_k = acos(10^(-9 k / 80)),
+/// computed once.
+fn force_grid() -> &'static [f64; 81] {
+    static GRID: std::sync::OnceLock<[f64; 81]> = std::sync::OnceLock::new();
+    GRID.get_or_init(|| std::array::from_fn(|k| (10f64.powf(-9.0 * k as f64 / 80.0)).acos()))
 }
 
 #[path = "mlm_panels.rs"]

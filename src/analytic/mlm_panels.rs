@@ -3,22 +3,24 @@
 //! The mean over a panel [s1, s2] (arc length s from the keel along the starboard contour) is
 //!
 //! ```text
-//! p_mean = (I(s2) - I(s1)) / (s2 - s1),      I(s) = integral_0^s max(p(y(s'), t), 0) ds'
+//! p_mean = (1 / (s2 - s1)) integral_{s1}^{s2} max(p(y(s), t), 0) ds
 //! ```
 //!
-//! with p the MLM pressure of [`Mlm::pressure`] (zero off f and on the dry part). I is evaluated once per
-//! time sample at every panel end, so the cost of a sample no longer grows with the number of panels
-//! times the quadrature of each. The arc is cut at the contour vertices, the panel ends, the pressure
-//! peak, the zero of the MLM formula between the peak and the contact point (max(p, 0) has a kink
-//! there) and the contact point itself; each piece on the wetted part is integrated with Gauss panels
-//! graded towards the contact point (each no longer than [`GRADING`] times its distance from it), where
-//! the pressure varies on the scale of that distance (p ~ 1/sqrt(c - x) and -1/(c - x), see
-//! [`crate::analytic::logvinovich_mlm`]).
+//! with p the MLM pressure of [`Mlm::pressure`] (zero off f and on the dry part). Per time sample the arc
+//! is cut once at the contour vertices, every panel end, the pressure peak, the zero of the MLM formula
+//! between the peak and the contact point (max(p, 0) has a kink there) and the contact point itself, so
+//! the cost of a sample does not grow with the number of panels times the quadrature of each. Only the
+//! pieces inside at least one panel are integrated (the arc between panels is not needed), and a panel's
+//! integral is the sum of its pieces from the keel outwards. Each piece on the wetted part is integrated
+//! with Gauss panels graded towards the contact point (each no longer than [`GRADING`] times its
+//! distance from it), where the pressure varies on the scale of that distance (p ~ 1/sqrt(c - x) and
+//! -1/(c - x), see [`crate::analytic::logvinovich_mlm`]).
 
 use rayon::prelude::*;
 
 use super::Mlm;
 use crate::analytic::entry_kinematics::EntryState;
+use crate::numerics::bisect;
 
 /// Largest Gauss panel on the wetted part, as a fraction of its distance from the contact point.
 const GRADING: f64 = 0.25;
@@ -64,11 +66,12 @@ impl Mlm {
             .is_some_and(|p| p > 0.0)
     }
 
-    /// I(s) of the module notes at each of the sorted arc lengths `q`.
-    pub fn arc_integral(&self, st: &EntryState, q: &[f64]) -> Vec<f64> {
+    /// The integral of max(p, 0) along the arc over each of the `spans` ([s1, s2] with s1 <= s2, arc
+    /// lengths from the keel), at one state (module notes).
+    pub fn span_integrals(&self, st: &EntryState, spans: &[(f64, f64)]) -> Vec<f64> {
         let c = st.c;
-        if c <= 0.0 || q.is_empty() {
-            return vec![0.0; q.len()];
+        if c <= 0.0 || spans.is_empty() {
+            return vec![0.0; spans.len()];
         }
         let end = self.contour.last().map_or(0.0, |p| p[2]);
         let s_c = self.arc_of_y(c);
@@ -78,51 +81,60 @@ impl Mlm {
             let (xp, pp) = self.peak(st);
             special.extend(self.arc_of_y(xp));
             if pp > 0.0 {
-                let (mut lo, mut hi) = (xp, c);
-                for _ in 0..60 {
-                    let mid = 0.5 * (lo + hi);
-                    if self.pressure_unclipped(st, mid).unwrap_or(-1.0) > 0.0 {
-                        lo = mid;
-                    } else {
-                        hi = mid;
-                    }
-                }
+                let (lo, hi) = bisect(xp, c, 60, |mid| {
+                    self.pressure_unclipped(st, mid).unwrap_or(-1.0) > 0.0
+                });
                 special.extend(self.arc_of_y(0.5 * (lo + hi)));
             }
         }
+        let clamped: Vec<(f64, f64)> = spans
+            .iter()
+            .map(|&(a, b)| (a.clamp(0.0, end), b.clamp(0.0, end)))
+            .collect();
         let mut cuts: Vec<f64> = self.contour.iter().map(|p| p[2]).collect();
         cuts.extend(special);
-        cuts.extend(q.iter().map(|&s| s.clamp(0.0, end)));
+        cuts.extend(clamped.iter().flat_map(|&(a, b)| [a, b]));
         cuts.sort_by(f64::total_cmp);
         cuts.dedup();
+        // Whether the piece starting at each cut lies in a span (spans are unions of pieces).
+        let mut inside = vec![false; cuts.len()];
+        for &(a, b) in &clamped {
+            let (i, j) = (
+                cuts.partition_point(|&x| x < a),
+                cuts.partition_point(|&x| x < b),
+            );
+            inside[i..j].iter_mut().for_each(|v| *v = true);
+        }
         // Graded panels up to the contact point in the MLM stage, plain ones elsewhere.
         let graded_end = s_c.filter(|_| st.c_dot.is_some());
-        let mut cum = Vec::with_capacity(cuts.len());
-        cum.push(0.0);
+        let mut piece = vec![0.0; cuts.len()];
         let mut k = 0;
-        let mut sum = 0.0;
-        for w in cuts.windows(2) {
+        for (n, w) in cuts.windows(2).enumerate() {
             let (a, b) = (w[0], w[1]);
             let mid = 0.5 * (a + b);
             while k + 2 < self.contour.len() && self.contour[k + 1][2] <= mid {
                 k += 1;
             }
             let (pa, pb) = (self.contour[k], self.contour[k + 1]);
-            // Skip pieces of zero length, of a degenerate segment, or wholly dry (y >= c).
-            if b > a && pb[2] > pa[2] && pa[0].min(pb[0]) < c {
+            // Skip pieces outside every span, of zero length, of a degenerate segment, or wholly dry
+            // (y >= c).
+            if inside[n] && b > a && pb[2] > pa[2] && pa[0].min(pb[0]) < c {
                 let g = |s: f64| self.pressure_on_segment(st, k, s);
                 let sign = |s: f64| st.c_dot.is_none() || self.positive_on_segment(st, k, s);
-                sum += match graded_end {
+                piece[n] = match graded_end {
                     Some(sc) if b <= sc => self.graded(a, b, sc, &g, &sign),
                     _ => self.split_gauss(a, b, &g, &sign),
                 };
             }
-            cum.push(sum);
         }
-        q.iter()
-            .map(|&s| {
-                let s = s.clamp(0.0, end);
-                cum[cuts.partition_point(|&x| x < s)]
+        clamped
+            .iter()
+            .map(|&(a, b)| {
+                let (i, j) = (
+                    cuts.partition_point(|&x| x < a),
+                    cuts.partition_point(|&x| x < b),
+                );
+                piece[i..j].iter().sum()
             })
             .collect()
     }
@@ -140,15 +152,18 @@ impl Mlm {
     ) -> f64 {
         let (h_max, d_min) = (MAX_PANEL * sc, MIN_DISTANCE * sc);
         let mut x = a;
+        // The sign at a panel's start is that at the previous panel's end.
+        let mut sx = sign(x);
         let mut sum = 0.0;
         while x < b {
             if sc - x <= d_min {
-                return sum + self.split_gauss(x, b, g, sign);
+                return sum + self.split_gauss_signed((x, sx), (b, sign(b)), g, sign);
             }
             let h = (GRADING * (sc - x)).min(h_max);
             let next = if b - x <= 1.5 * h { b } else { x + h };
-            sum += self.split_gauss(x, next, g, sign);
-            x = next;
+            let sn = sign(next);
+            sum += self.split_gauss_signed((x, sx), (next, sn), g, sign);
+            (x, sx) = (next, sn);
         }
         sum
     }
@@ -161,19 +176,21 @@ impl Mlm {
         g: &impl Fn(f64) -> f64,
         sign: &impl Fn(f64) -> bool,
     ) -> f64 {
-        let sa = sign(a);
-        if sa == sign(b) {
+        self.split_gauss_signed((a, sign(a)), (b, sign(b)), g, sign)
+    }
+
+    /// [`Mlm::split_gauss`] with the signs at the ends already known: `(a, sign(a))`, `(b, sign(b))`.
+    fn split_gauss_signed(
+        &self,
+        (a, sa): (f64, bool),
+        (b, sb): (f64, bool),
+        g: &impl Fn(f64) -> f64,
+        sign: &impl Fn(f64) -> bool,
+    ) -> f64 {
+        if sa == sb {
             return self.gauss(a, b, g);
         }
-        let (mut lo, mut hi) = (a, b);
-        for _ in 0..60 {
-            let mid = 0.5 * (lo + hi);
-            if sign(mid) == sa {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
+        let (lo, hi) = bisect(a, b, 60, |mid| sign(mid) == sa);
         let m = 0.5 * (lo + hi);
         self.gauss(a, m, g) + self.gauss(m, b, g)
     }
@@ -181,19 +198,16 @@ impl Mlm {
     /// Mean pressures over the panels `panels` ([s1, s2] arc lengths from the keel, in either order) at
     /// one state; a panel of zero width reads the point value [`Mlm::pressure_at_arc`].
     pub fn sensor_means(&self, st: &EntryState, panels: &[(f64, f64)]) -> Vec<f64> {
-        let mut q: Vec<f64> = panels.iter().flat_map(|&(a, b)| [a, b]).collect();
-        q.sort_by(f64::total_cmp);
-        q.dedup();
-        let i = self.arc_integral(st, &q);
-        let at = |s: f64| i[q.partition_point(|&x| x < s)];
-        panels
+        let spans: Vec<(f64, f64)> = panels.iter().map(|&(a, b)| (a.min(b), a.max(b))).collect();
+        let integral = self.span_integrals(st, &spans);
+        spans
             .iter()
-            .map(|&(a, b)| {
-                let (s1, s2) = (a.min(b), a.max(b));
+            .zip(integral)
+            .map(|(&(s1, s2), i)| {
                 if s2 <= s1 {
                     self.pressure_at_arc(st, s1)
                 } else {
-                    (at(s2) - at(s1)) / (s2 - s1)
+                    i / (s2 - s1)
                 }
             })
             .collect()

@@ -150,17 +150,25 @@ impl Profile {
 
     /// f(y): height of the lowest body point above the keel at half-breadth |y|, or `None` past y_end.
     pub fn height(&self, y: f64) -> Option<f64> {
+        self.height_and_slope(y).0
+    }
+
+    /// [`Profile::height`] and [`Profile::slope`] at |y| from one search for the segment.
+    pub fn height_and_slope(&self, y: f64) -> (Option<f64>, f64) {
         let y = y.abs();
-        if y > self.y_end() {
-            return None;
-        }
-        if y == 0.0 {
-            return Some(0.0); // the keel, also under a vertical keel bar
-        }
-        self.segment(y).map(|(a, b)| {
-            let s = (y - a[0]) / (b[0] - a[0]);
-            a[1] + s * (b[1] - a[1])
-        })
+        let seg = self.segment(y);
+        let slope = seg.map_or(0.0, |(a, b)| (b[1] - a[1]) / (b[0] - a[0]));
+        let height = if y > self.y_end() {
+            None
+        } else if y == 0.0 {
+            Some(0.0) // the keel, also under a vertical keel bar
+        } else {
+            seg.map(|(a, b)| {
+                let s = (y - a[0]) / (b[0] - a[0]);
+                a[1] + s * (b[1] - a[1])
+            })
+        };
+        (height, slope)
     }
 
     /// f'(|y|) on the (non-vertical) segment holding |y|: the local deadrise slope tan(beta). 0 past y_end.
@@ -169,11 +177,15 @@ impl Profile {
             .map_or(0.0, |(a, b)| (b[1] - a[1]) / (b[0] - a[0]))
     }
 
-    /// The first non-vertical segment with a[0] <= y <= b[0].
+    /// The first non-vertical segment with a[0] <= y <= b[0]. The half-breadths of f do not decrease
+    /// ([`Profile::from_half_points`]), so the segments with b[0] >= y start at a binary-searched index
+    /// and the first that also has a[0] <= y and b[0] > a[0] is the one a scan from the keel finds.
     fn segment(&self, y: f64) -> Option<([f64; 2], [f64; 2])> {
-        self.pts
+        let first = self.pts[1..].partition_point(|p| p[0] < y);
+        self.pts[first..]
             .windows(2)
-            .find(|w| w[1][0] > w[0][0] && w[0][0] <= y && y <= w[1][0])
+            .take_while(|w| w[0][0] <= y)
+            .find(|w| w[1][0] > w[0][0] && y <= w[1][0])
             .map(|w| (w[0], w[1]))
     }
 

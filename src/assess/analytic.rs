@@ -15,6 +15,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::plan::EntryCase;
+use crate::analytic::entry_kinematics::EntryHistory;
 use crate::analytic::generalised_wagner;
 use crate::analytic::logvinovich_mlm::Mlm;
 use crate::analytic::peak::peak_candidates;
@@ -283,7 +284,9 @@ pub fn estimate_in(case: &EntryCase, rho: f64) -> Result<Estimate> {
     } else {
         (t0, v0, false)
     };
-    let w = generalised_wagner::estimate_immersed(&case.half_points, d0, &t, &v, rho)?;
+    // One entry history for the Wagner estimate and the MLM along the same samples.
+    let hist = EntryHistory::new_immersed(&case.half_points, d0, &t, &v)?;
+    let w = generalised_wagner::estimate_from_history(&hist, d0, rho);
     let mut notes = w.notes.clone();
     if capped {
         notes.push(format!(
@@ -295,7 +298,7 @@ pub fn estimate_in(case: &EntryCase, rho: f64) -> Result<Estimate> {
     if let Some(why) = &w.stopped {
         notes.push(format!("Wagner estimate stops early: {why}"));
     }
-    let mlm = Mlm::new_immersed(&case.half_points, d0, &t, &v, rho)?;
+    let mlm = Mlm::with_history(&case.half_points, hist, rho);
     let times = mlm.times();
     let acoustic = mlm.acoustic();
     if d0 > 0.0 {
