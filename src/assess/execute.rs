@@ -516,22 +516,11 @@ pub fn run(
                 plan.rho,
             ));
         }
-        events.push(EventResult {
-            station: e.station,
-            x_m: e.x,
-            speed_m_per_s: e.speed_m_s,
-            wave: e.wave.clone(),
-            slam_flag: e.flag,
-            entry_velocity_m_per_s: e.entry_velocity_m_s,
-            entry_kind: e.entry.as_ref().map(|_| plan::kind_of(e.flare.as_ref())),
-            flare_event: e.flare.clone(),
-            design_event: e.design.clone(),
-            analytic: estimates[i].clone(),
-            run_folder: sph.as_ref().map(|r| format!("cache/{}", r.key)),
-            sph,
-            failed,
-            warnings,
-        });
+        let mut result = EventResult::of_event(e, estimates[i].clone(), warnings);
+        result.run_folder = sph.as_ref().map(|r| format!("cache/{}", r.key));
+        result.sph = sph;
+        result.failed = failed;
+        events.push(result);
     }
     let failed_runs = events.iter().filter(|e| e.failed.is_some()).count();
     let mut bow_force = Vec::new();

@@ -334,6 +334,35 @@ pub struct EventResult {
 }
 
 impl EventResult {
+    /// The result of the planned event `e` with its analytic estimate and warnings, before any SPH run
+    /// (`sph`, `run_folder` and `failed` empty): what an analytic sweep case keeps, and what `assess`
+    /// completes with its run.
+    pub fn of_event(
+        e: &super::plan::Event,
+        analytic: Option<Estimate>,
+        warnings: Vec<String>,
+    ) -> Self {
+        Self {
+            station: e.station,
+            x_m: e.x,
+            speed_m_per_s: e.speed_m_s,
+            wave: e.wave.clone(),
+            slam_flag: e.flag,
+            entry_velocity_m_per_s: e.entry_velocity_m_s,
+            entry_kind: e
+                .entry
+                .as_ref()
+                .map(|_| super::plan::kind_of(e.flare.as_ref())),
+            flare_event: e.flare.clone(),
+            design_event: e.design.clone(),
+            analytic,
+            sph: None,
+            run_folder: None,
+            failed: None,
+            warnings,
+        }
+    }
+
     /// The section force design decision ([`super::design_rule`]).
     pub fn force_design(&self) -> Option<Decision> {
         let q = self.sph.as_ref().map(|s| SphQuantity {

@@ -122,25 +122,7 @@ fn estimated(e: assess::Event, rho: f64) -> EventResult {
         }
         None => None,
     };
-    EventResult {
-        station: e.station,
-        x_m: e.x,
-        speed_m_per_s: e.speed_m_s,
-        wave: e.wave.clone(),
-        slam_flag: e.flag,
-        entry_velocity_m_per_s: e.entry_velocity_m_s,
-        analytic,
-        sph: None,
-        run_folder: None,
-        failed: None,
-        warnings,
-        entry_kind: e
-            .entry
-            .as_ref()
-            .map(|_| crate::assess::plan::kind_of(e.flare.as_ref())),
-        flare_event: e.flare.clone(),
-        design_event: e.design.clone(),
-    }
+    EventResult::of_event(&e, analytic, warnings)
 }
 
 /// An analytic case from its variant's strip theory: its events, its stations' slam statistics and the
