@@ -218,6 +218,17 @@ fn an_open_surface_and_a_bad_grid_are_reported() {
     write_binary_stl(&open, &v, &t);
     let e = import(&open, &options(None)).unwrap_err().to_string();
     assert!(e.contains("not closed"), "{e}");
+    assert!(e.contains("close the hull with a deck"), "{e}");
+
+    // A face drawn twice: closed, but not one simple surface, and the remedy is not a deck.
+    let (v, mut t) = wigley_mesh();
+    t.push(t[0]);
+    let twice = dir.path().join("twice.stl");
+    write_binary_stl(&twice, &v, &t);
+    let e = import(&twice, &options(None)).unwrap_err().to_string();
+    assert!(e.contains("shared by more than two triangles"), "{e}");
+    assert!(e.contains("(3 triangles)"), "{e}");
+    assert!(!e.contains("not closed") && !e.contains("deck"), "{e}");
 
     let bad = dir.path().join("bad.csv");
     std::fs::write(&bad, "x_m,0,0.1,0.2\n0,0.1,0.2,0.3\n1,0.1,x,0.3\n").unwrap();

@@ -307,23 +307,55 @@ pub fn read_stl(path: &Path) -> Result<Mesh> {
     })
 }
 
+/// What keeps `mesh` from being one closed surface that can be cut into sections, or `None`: edges of
+/// one triangle (a hole: a missing deck, transom or faces), or edges shared by more than two (faces
+/// duplicated or overlapping, or the two sides drawn on the same faces along a stem, keel or skeg of
+/// zero thickness). Each with the count and the first such edge.
+fn surface_fault(mesh: &Mesh) -> Option<String> {
+    let bad = mesh.open_edges();
+    let at = |((a, b), _): &((usize, usize), usize)| {
+        let (pa, pb) = (mesh.vertices[*a], mesh.vertices[*b]);
+        format!(
+            "from ({:.4}, {:.4}, {:.4}) to ({:.4}, {:.4}, {:.4}) m",
+            pa[0], pa[1], pa[2], pb[0], pb[1], pb[2]
+        )
+    };
+    let edges = |n: usize, one: &str, many: &str| {
+        if n == 1 {
+            format!("1 edge {one}")
+        } else {
+            format!("{n} edges {many}")
+        }
+    };
+    let open: Vec<_> = bad.iter().filter(|e| e.1 < 2).collect();
+    let shared: Vec<_> = bad.iter().filter(|e| e.1 > 2).collect();
+    let mut faults = Vec::new();
+    if let Some(first) = open.first() {
+        faults.push(format!(
+            "the surface is not closed: {} to one triangle only, the first {}; close the hull with a deck \
+             (and transom) before importing",
+            edges(open.len(), "belongs", "belong"),
+            at(first)
+        ));
+    }
+    if let Some(first) = shared.first() {
+        faults.push(format!(
+            "the surface is not a simple closed surface: {} by more than two triangles, the first ({} \
+             triangles) {}; faces are duplicated or overlap, or the two sides of the hull \
+             lie on the same faces along an edge of zero thickness (a stem, keel or skeg drawn as a \
+             plane): remove the duplicated faces, or give that edge a thickness, before importing",
+            edges(shared.len(), "is shared", "are shared"),
+            first.1,
+            at(first)
+        ));
+    }
+    (!faults.is_empty()).then(|| faults.join("; and "))
+}
+
 fn import_stl(path: &Path, opts: &ImportOptions) -> Result<Imported> {
     let mut mesh = read_stl(path)?;
-    let open = mesh.open_edges();
-    if let Some(&((a, b), n)) = open.first() {
-        let (pa, pb) = (mesh.vertices[a], mesh.vertices[b]);
-        return Err(Error::Invalid(format!(
-            "{}: the surface is not closed: {} edges belong to {} triangle(s) instead of two, the first from ({:.4}, {:.4}, {:.4}) to ({:.4}, {:.4}, {:.4}) m; close the hull with a deck (and transom) before importing",
-            path.display(),
-            open.len(),
-            n,
-            pa[0],
-            pa[1],
-            pa[2],
-            pb[0],
-            pb[1],
-            pb[2]
-        )));
+    if let Some(why) = surface_fault(&mesh) {
+        return Err(Error::Invalid(format!("{}: {why}", path.display())));
     }
     let mut notes = Vec::new();
     let (x0, x1) = mesh.range(0);
