@@ -211,6 +211,24 @@ fn a_section_of_short_offset_segments_keeps_its_water_out_of_the_body() {
     runs_without_water_in_the_body("feeder 0.08 Lpp", &feeder_station_008(), 9.2, 0.226595, 1.1);
 }
 
+/// Station 0.15 Lpp of a frigate-like hull imported from a triangulated surface (120 m, V bow; the STL
+/// was made for the 2026-11-30 session note): its keel segment is 0.6 dp long with a curve beyond it. Before
+/// the band's keel run took in that curve (`sph::dummy_band`, 2026-11-30) its layers left a gap of 1.5-2.2 dp
+/// across the plane at the keel; driven at 5.2 m/s its water leaked into the body there (98 particles put
+/// back) and the run blew up 39 spacings deep at 1.33 s. About 20 s on 2 cores:
+/// `cargo test --release --test sph_hull_sections -- --ignored short_keel`.
+#[test]
+#[ignore = "regression run, about 20 s"]
+fn a_section_with_a_short_keel_segment_keeps_its_water_out_of_the_body() {
+    runs_without_water_in_the_body(
+        "frigate 0.15 Lpp",
+        &frigate_station_015(),
+        5.2,
+        0.178779625,
+        1.45,
+    );
+}
+
 /// A deep entry of `section` at constant `speed` (m/s), spacing `dp` (m), to `t_end` (s): the run must
 /// reach its end, with at most 20 water particles put back out of the body.
 fn runs_without_water_in_the_body(label: &str, section: &Section, speed: f64, dp: f64, t_end: f64) {
@@ -234,6 +252,53 @@ fn runs_without_water_in_the_body(label: &str, section: &Section, speed: f64, dp
         "{label}: {} water particles put back out of the body",
         s.counters.contact_corrections
     );
+}
+
+/// Station 0.15 Lpp of the frigate-like STL hull, as `slamtool hull import` cut it (21 stations).
+fn frigate_station_015() -> Section {
+    Section::from_half_points(vec![
+        [0.0, 0.0],
+        [0.101763, 0.041059],
+        [0.236848, 0.116131],
+        [0.388222, 0.213346],
+        [0.551251, 0.328468],
+        [0.723533, 0.459048],
+        [0.903568, 0.603434],
+        [1.090315, 0.760414],
+        [1.283009, 0.929048],
+        [1.481058, 1.10858],
+        [1.683988, 1.298384],
+        [1.891412, 1.497932],
+        [2.103009, 1.70677],
+        [2.318501, 1.924501],
+        [2.537654, 2.150776],
+        [2.760261, 2.385283],
+        [2.98614, 2.627744],
+        [3.21513, 2.877905],
+        [3.447087, 3.135536],
+        [3.681882, 3.400427],
+        [3.919397, 3.672384],
+        [4.159524, 3.951227],
+        [4.402167, 4.236792],
+        [4.636402, 4.528922],
+        [4.773632, 4.827474],
+        [4.913751, 5.132313],
+        [5.056701, 5.443311],
+        [5.202428, 5.760348],
+        [5.350878, 6.083313],
+        [5.502004, 6.412097],
+        [5.655759, 6.7466],
+        [5.812097, 7.086726],
+        [5.970979, 7.432383],
+        [6.132362, 7.783483],
+        [6.29621, 8.139945],
+        [6.462485, 8.501688],
+        [6.631153, 8.868636],
+        [6.80218, 9.240717],
+        [6.975534, 9.617861],
+        [7.151185, 10.0],
+    ])
+    .unwrap()
 }
 
 /// Station 0.08 Lpp of `tests/data/bulbous-feeder.toml`, as its offsets give it.

@@ -26,7 +26,10 @@
 //! a run of its own, whose layer points are placed from the plane outwards: the first where the layer is
 //! half a spacing off the plane, the others about dp apart along the segment, to half a gap before its
 //! end. With its mirror image the first point spaces the layer dp apart across the plane, at the layer's
-//! own depth. The lattice of the corners is aligned with the plane in the same way (y = dp/2, 3 dp/2,
+//! own depth. A keel segment too short to hold the deepest layer's first point (a section cut from a
+//! triangulated surface, or offsets closely spaced at the keel) is not a run of its own: it runs on into
+//! the curve beyond it, and the layers start dp/2 off the plane on that curve ([`holds_first_point`]).
+//! The lattice of the corners is aligned with the plane in the same way (y = dp/2, 3 dp/2,
 //! ...), and no point is placed closer than the minimum gap to a mirror image.
 //!
 //! (Until 2026-11-29 a column of points at y = dp/2 and heights (k + 1/2) dp was placed first instead.
@@ -71,7 +74,7 @@ pub fn dummy_points(section: &Section, dp: f64, layers: usize, y_min: f64) -> Ve
         hash.insert(pts.len(), p);
         pts.push(p);
     };
-    let runs = runs(&c, dp, mirror);
+    let runs = runs(&c, dp, mirror, depth - 0.5 * dp);
     for k in 0..layers {
         let d = (k as f64 + 0.5) * dp;
         for run in &runs {
@@ -119,10 +122,13 @@ fn tangent(c: &[[f64; 2]], i: usize, dp: f64) -> Option<[f64; 2]> {
 /// The runs of the closed contour `c`: ranges of segment indices (segment i from c[i] to c[i + 1]), in
 /// order, split where the direction turns by at least [`RUN_CORNER_DEG`] between two segments that have
 /// a direction. With a symmetry plane (`mirror`) a segment that touches or crosses y = 0 is a run of its
-/// own.
-fn runs(c: &[[f64; 2]], dp: f64, mirror: bool) -> Vec<Range<usize>> {
+/// own, unless it is too short to hold the first point of the layer at depth `deepest` (see
+/// [`holds_first_point`]): then it runs on into the segments that follow it without a corner, so that
+/// the layers start half a spacing off the plane on the curve beyond it instead of leaving a gap there.
+fn runs(c: &[[f64; 2]], dp: f64, mirror: bool, deepest: f64) -> Vec<Range<usize>> {
     let n = c.len().saturating_sub(1);
     let on_plane = |i: usize| mirror && c[i][0] * c[i + 1][0] <= 0.0;
+    let own_run = |i: usize| on_plane(i) && holds_first_point(c[i], c[i + 1], deepest, dp);
     let cos_corner = RUN_CORNER_DEG.to_radians().cos();
     let mut out = Vec::new();
     let (mut start, mut last) = (0, None::<[f64; 2]>);
@@ -132,7 +138,7 @@ fn runs(c: &[[f64; 2]], dp: f64, mirror: bool) -> Vec<Range<usize>> {
             (Some(a), Some(b)) => a[0] * b[0] + a[1] * b[1] < cos_corner,
             _ => false,
         };
-        if i > start && (corner || on_plane(i) || on_plane(i - 1)) {
+        if i > start && (corner || on_plane(i) || own_run(i - 1)) {
             out.push(start..i);
             (start, last) = (i, None);
         }
@@ -144,6 +150,23 @@ fn runs(c: &[[f64; 2]], dp: f64, mirror: bool) -> Vec<Range<usize>> {
         out.push(start..n);
     }
     out
+}
+
+/// Whether the segment from `a` to `b`, which touches or crosses the symmetry plane, holds the first
+/// point of the layer at depth `d` (where that layer is dp/2 off the plane, [`layer_positions`]). A
+/// segment that runs towards the plane, or along it, is taken to hold it (it is placed as before).
+/// (Until 2026-11-30 a plane segment was always a run of its own. An imported 120 m hull whose keel
+/// segment was 0.6 dp long, with a curve beyond it, then had no point of any layer on that segment and
+/// the curve's layers began half a gap past its end: a band 1.5-2.2 dp apart across the plane at the
+/// keel. Driven 35 spacings deep, its water leaked into the body at the keel and the run blew up.)
+fn holds_first_point(a: [f64; 2], b: [f64; 2], d: f64, dp: f64) -> bool {
+    let (ty, tz) = (b[0] - a[0], b[1] - a[1]);
+    let l = ty.hypot(tz);
+    if l == 0.0 || ty / l <= 1e-9 {
+        return true;
+    }
+    let s0 = (0.5 * dp - a[0] + d * tz / l) / (ty / l);
+    s0 <= l
 }
 
 /// The points of the dummy layer at depth `d` along the run `run` of the closed contour `c`.
@@ -197,11 +220,26 @@ fn layer_points(c: &[[f64; 2]], run: Range<usize>, d: f64, dp: f64, mirror: bool
     if total <= 0.0 {
         return Vec::new();
     }
-    let m = ((total / dp).round() as usize).max(1);
-    let mut out = Vec::with_capacity(m);
+    let positions: Vec<f64> = if mirror && c[i0][0] * c[i0 + 1][0] <= 0.0 {
+        // A run that starts on the symmetry plane (a keel segment too short to be a run of its own,
+        // [`runs`]): the first point where the offset is dp/2 off the plane, the others after it, as on
+        // a plane segment of its own ([`layer_positions`]).
+        let Some(s0) = arc_where_y(&off, &lengths, 0.5 * dp) else {
+            return Vec::new();
+        };
+        let span = total - s0;
+        let m = ((span / dp + 0.5).round() as usize).max(1);
+        let gap = if m > 1 { span / (m as f64 - 0.5) } else { 0.0 };
+        (0..m).map(|j| s0 + j as f64 * gap).collect()
+    } else {
+        let m = ((total / dp).round() as usize).max(1);
+        (0..m)
+            .map(|j| (j as f64 + 0.5) / m as f64 * total)
+            .collect()
+    };
+    let mut out = Vec::with_capacity(positions.len());
     let (mut k, mut acc) = (0, 0.0);
-    for j in 0..m {
-        let s = (j as f64 + 0.5) / m as f64 * total;
+    for s in positions {
         while k + 1 < lengths.len() && s > acc + lengths[k] {
             acc += lengths[k];
             k += 1;
@@ -215,6 +253,23 @@ fn layer_points(c: &[[f64; 2]], run: Range<usize>, d: f64, dp: f64, mirror: bool
         out.push([a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1])]);
     }
     out
+}
+
+/// The arc length along the polyline `off` (segment lengths `lengths`) where its y first reaches `y`
+/// from below, or `None` if it does not.
+fn arc_where_y(off: &[[f64; 2]], lengths: &[f64], y: f64) -> Option<f64> {
+    let mut acc = 0.0;
+    for (w, &l) in off.windows(2).zip(lengths) {
+        let (ya, yb) = (w[0][0], w[1][0]);
+        if ya >= y {
+            return Some(acc);
+        }
+        if yb >= y {
+            return Some(acc + l * (y - ya) / (yb - ya));
+        }
+        acc += l;
+    }
+    None
 }
 
 /// Arc-length positions along a contour segment (from y = `ya` to y = `yb`, unit tangent y-component
@@ -353,6 +408,86 @@ mod tests {
             assert!(
                 n_half.abs_diff(n_full) <= 2,
                 "{name}: {n_half} points near the keel with the mirror images, {n_full} in the whole band"
+            );
+        }
+    }
+
+    /// A keel segment shorter than a spacing, with a curve beyond it (an imported hull's section cut from
+    /// a triangulated surface): every layer starts dp/2 off the plane, dp from its mirror image, and its
+    /// next point follows about dp further on. (Until 2026-11-30 the keel segment was a run of its own
+    /// too short to hold a point: the layers started 0.77, 1.12 and 0.64 dp off the plane, gaps of 1.5,
+    /// 2.2 and 1.3 dp across it.) The keel segments long enough for the deepest layer keep their run:
+    /// the bands of the half-domain test above are unchanged.
+    #[test]
+    fn a_keel_segment_shorter_than_a_spacing_leaves_no_gap_at_the_plane() {
+        let dp = 0.178779625;
+        // The frigate-like test hull's station 0.15 Lpp, as its import cut it, at 40 particles per
+        // half-breadth.
+        let half = vec![
+            [0.0, 0.0],
+            [0.101763, 0.041059],
+            [0.236848, 0.116131],
+            [0.388222, 0.213346],
+            [0.551251, 0.328468],
+            [0.723533, 0.459048],
+            [0.903568, 0.603434],
+            [1.090315, 0.760414],
+            [1.283009, 0.929048],
+            [1.481058, 1.10858],
+            [1.683988, 1.298384],
+            [1.891412, 1.497932],
+            [2.103009, 1.70677],
+            [2.318501, 1.924501],
+            [2.537654, 2.150776],
+            [2.760261, 2.385283],
+            [2.98614, 2.627744],
+            [3.21513, 2.877905],
+            [3.447087, 3.135536],
+            [3.681882, 3.400427],
+            [3.919397, 3.672384],
+            [4.159524, 3.951227],
+            [4.402167, 4.236792],
+            [4.636402, 4.528922],
+            [4.773632, 4.827474],
+            [4.913751, 5.132313],
+            [5.056701, 5.443311],
+            [5.202428, 5.760348],
+            [5.350878, 6.083313],
+            [5.502004, 6.412097],
+            [5.655759, 6.7466],
+            [5.812097, 7.086726],
+            [5.970979, 7.432383],
+            [6.132362, 7.783483],
+            [6.29621, 8.139945],
+            [6.462485, 8.501688],
+            [6.631153, 8.868636],
+            [6.80218, 9.240717],
+            [6.975534, 9.617861],
+            [7.151185, 10.0],
+        ];
+        let s = Section::from_half_points(half).unwrap();
+        let c = s.closed_contour();
+        let pts = dummy_points(&s, dp, 3, dp / 4.0);
+        for k in 0..3 {
+            let depth = (k as f64 + 0.5) * dp;
+            let mut layer: Vec<[f64; 2]> = pts
+                .iter()
+                .filter(|p| {
+                    p[1] < 1.0 && (distance_to_polyline(&c, p[0], p[1]) - depth).abs() < 0.25 * dp
+                })
+                .copied()
+                .collect();
+            layer.sort_by(|a, b| a[0].total_cmp(&b[0]));
+            let (first, next) = (layer[0], layer[1]);
+            assert!(
+                (first[0] - 0.5 * dp).abs() < 1e-9,
+                "layer {k}: first point {:.3} dp off the plane",
+                first[0] / dp
+            );
+            let gap = (next[0] - first[0]).hypot(next[1] - first[1]) / dp;
+            assert!(
+                (0.9..1.1).contains(&gap),
+                "layer {k}: next point {gap:.3} dp on"
             );
         }
     }
