@@ -211,8 +211,8 @@ fn a_section_of_short_offset_segments_keeps_its_water_out_of_the_body() {
     runs_without_water_in_the_body("feeder 0.08 Lpp", &feeder_station_008(), 9.2, 0.226595, 1.1);
 }
 
-/// Station 0.15 Lpp of a frigate-like hull imported from a triangulated surface (120 m, V bow; the STL
-/// was made for the 2026-11-30 session note): its keel segment is 0.6 dp long with a curve beyond it. Before
+/// Station 0.15 Lpp of a frigate-like hull imported from a triangulated surface (120 m, V bow;
+/// `tests/data/frigate-like.toml`, which says how its surface was made): its keel segment is 0.6 dp long with a curve beyond it. Before
 /// the band's keel run took in that curve (`sph::dummy_band`, 2026-11-30) its layers left a gap of 1.5-2.2 dp
 /// across the plane at the keel; driven at 5.2 m/s its water leaked into the body there (98 particles put
 /// back) and the run blew up 39 spacings deep at 1.33 s. About 20 s on 2 cores:
@@ -254,7 +254,7 @@ fn runs_without_water_in_the_body(label: &str, section: &Section, speed: f64, dp
     );
 }
 
-/// Station 0.15 Lpp of the frigate-like STL hull, as `slamtool hull import` cut it (21 stations).
+/// Station 0.15 Lpp of `tests/data/frigate-like.toml`, as `slamtool hull import` cut it from the STL.
 fn frigate_station_015() -> Section {
     Section::from_half_points(vec![
         [0.0, 0.0],
@@ -381,5 +381,21 @@ fn the_short_segment_section_is_the_test_hull_s_station() {
     assert_eq!(
         hull.section_at(x).unwrap().points,
         feeder_station_008().half_points()
+    );
+}
+
+/// The section of the short-keel regression run is the frigate-like test hull's station 0.15 Lpp, point
+/// for point, so the committed hull reproduces the run.
+#[test]
+fn the_short_keel_section_is_the_test_hull_s_station() {
+    let hull = Hull::from_file(std::path::Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/frigate-like.toml"
+    )))
+    .unwrap();
+    let x = 0.5 * 120.0 - 0.15 * 120.0;
+    assert_eq!(
+        hull.section_at(x).unwrap().points,
+        frigate_station_015().half_points()
     );
 }
