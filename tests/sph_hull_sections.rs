@@ -212,10 +212,11 @@ fn a_section_of_short_offset_segments_keeps_its_water_out_of_the_body() {
 }
 
 /// Station 0.15 Lpp of a frigate-like hull imported from a triangulated surface (120 m, V bow;
-/// `tests/data/frigate-like.toml`, which says how its surface was made): its keel segment is 0.6 dp long with a curve beyond it. Before
-/// the band's keel run took in that curve (`sph::dummy_band`, 2026-11-30) its layers left a gap of 1.5-2.2 dp
-/// across the plane at the keel; driven at 5.2 m/s its water leaked into the body there (98 particles put
-/// back) and the run blew up 39 spacings deep at 1.33 s. About 20 s on 2 cores:
+/// `tests/data/frigate-like.toml`, which says how its surface was made): its keel segment is 0.6 dp long,
+/// with a curve beyond it. Before the band's keel run took in that curve (`sph::dummy_band`, 2026-11-30)
+/// its layers left a gap of 1.5-2.2 dp across the plane at the keel; driven at 5.2 m/s its water leaked
+/// into the body there (98 particles put back) and the run blew up 39 spacings deep at 1.33 s. About 20 s
+/// on 2 cores:
 /// `cargo test --release --test sph_hull_sections -- --ignored short_keel`.
 #[test]
 #[ignore = "regression run, about 20 s"]

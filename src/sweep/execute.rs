@@ -104,7 +104,7 @@ type SeaSpeedMemo = std::sync::Mutex<std::collections::HashMap<(usize, u64, Stri
 
 /// An event of a sweep's analytic case with its analytic estimate in the loading's water of density
 /// `rho`, as `assess` makes it.
-fn estimated(e: assess::Event, rho: f64) -> EventResult {
+fn estimated(e: &assess::Event, rho: f64) -> EventResult {
     // in the loading's water, as `assess` does (sea water 1025 kg/m3 for most hulls)
     let est = e
         .entry
@@ -122,7 +122,7 @@ fn estimated(e: assess::Event, rho: f64) -> EventResult {
         }
         None => None,
     };
-    EventResult::of_event(&e, analytic, warnings)
+    EventResult::of_event(e, analytic, warnings)
 }
 
 /// An analytic case from its variant's strip theory: its events, its stations' slam statistics and the
@@ -157,7 +157,7 @@ fn analytic_case(
                     let (mut notes, mut oversized) = (Vec::new(), Vec::new());
                     let planned =
                         vm.design_events(&v.hull, u, sea, &stats, &mut notes, &mut oversized)?;
-                    let events = planned.iter().cloned().map(|e| estimated(e, rho)).collect();
+                    let events = planned.iter().map(|e| estimated(e, rho)).collect();
                     let part = SeaSpeedPart {
                         stats,
                         planned,
@@ -188,7 +188,7 @@ fn analytic_case(
     case_warnings.extend(notes);
     // the regular waves' events get their estimates here; the design events have theirs from the memo
     planned.truncate(regular);
-    let mut events: Vec<EventResult> = planned.into_iter().map(|e| estimated(e, rho)).collect();
+    let mut events: Vec<EventResult> = planned.iter().map(|e| estimated(e, rho)).collect();
     events.extend(design);
     Ok((events, stats, case_warnings))
 }

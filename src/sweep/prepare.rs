@@ -15,13 +15,13 @@ use crate::error::{Error, InputError, Result};
 use crate::hull::{Hull, LoadingCondition};
 use crate::input::num;
 use crate::provenance::{TOOL, sha256_hex};
+use crate::sea::{IrregularSea, RegularWave, SeaState, Spectrum, breaking_steepness};
 
 /// The version of how a case is computed, part of every case key: a sweep resumed with a build that
 /// computes its cases differently computes them again instead of mixing old and new cases. Raise it with
 /// every such change. 2 (2026-11-30): analytic cases make the irregular seas' design events (before,
 /// their regular waves' events only).
 pub const CASE_RULES: u32 = 2;
-use crate::sea::{IrregularSea, RegularWave, SeaState, Spectrum, breaking_steepness};
 
 /// The speeds and waves of one case.
 #[derive(Debug, Clone)]
