@@ -180,12 +180,11 @@ impl Mlm {
         let p_of = |w: f64| self.pressure(s, x_of(w));
         let grid = peak_grid();
         let n = PEAK_GRID;
-        let w_at = |k: usize| grid[k];
-        let on_grid: Vec<f64> = (0..=n).map(|k| p_of(w_at(k))).collect();
+        let on_grid: Vec<f64> = grid[..=n].iter().map(|&w| p_of(w)).collect();
         let k_best = (0..=n)
             .max_by(|&a, &b| on_grid[a].total_cmp(&on_grid[b]))
             .unwrap_or(n);
-        let (mut a, mut b) = (w_at(k_best.saturating_sub(1)), w_at((k_best + 1).min(n)));
+        let (mut a, mut b) = (grid[k_best.saturating_sub(1)], grid[(k_best + 1).min(n)]);
         let g = 0.5 * (5f64.sqrt() - 1.0);
         for _ in 0..80 {
             let (m1, m2) = (b - g * (b - a), a + g * (b - a));
@@ -205,7 +204,7 @@ impl Mlm {
         if p >= on_grid[k_best] {
             (x, p)
         } else {
-            (x_of(w_at(k_best)), on_grid[k_best])
+            (x_of(grid[k_best]), on_grid[k_best])
         }
     }
 

@@ -96,14 +96,15 @@ impl Mlm {
         cuts.extend(clamped.iter().flat_map(|&(a, b)| [a, b]));
         cuts.sort_by(f64::total_cmp);
         cuts.dedup();
-        // Whether the piece starting at each cut lies in a span (spans are unions of pieces).
+        // Each span is the union of the pieces starting at cuts i..j; a piece is integrated when it lies
+        // in a span.
+        let ranges: Vec<std::ops::Range<usize>> = clamped
+            .iter()
+            .map(|&(a, b)| cuts.partition_point(|&x| x < a)..cuts.partition_point(|&x| x < b))
+            .collect();
         let mut inside = vec![false; cuts.len()];
-        for &(a, b) in &clamped {
-            let (i, j) = (
-                cuts.partition_point(|&x| x < a),
-                cuts.partition_point(|&x| x < b),
-            );
-            inside[i..j].iter_mut().for_each(|v| *v = true);
+        for r in &ranges {
+            inside[r.clone()].iter_mut().for_each(|v| *v = true);
         }
         // Graded panels up to the contact point in the MLM stage, plain ones elsewhere.
         let graded_end = s_c.filter(|_| st.c_dot.is_some());
@@ -127,16 +128,7 @@ impl Mlm {
                 };
             }
         }
-        clamped
-            .iter()
-            .map(|&(a, b)| {
-                let (i, j) = (
-                    cuts.partition_point(|&x| x < a),
-                    cuts.partition_point(|&x| x < b),
-                );
-                piece[i..j].iter().sum()
-            })
-            .collect()
+        ranges.into_iter().map(|r| piece[r].iter().sum()).collect()
     }
 
     /// Integral over [a, b] (b <= sc) with Gauss panels no longer than [`GRADING`] times their distance

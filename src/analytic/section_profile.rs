@@ -173,8 +173,7 @@ impl Profile {
 
     /// f'(|y|) on the (non-vertical) segment holding |y|: the local deadrise slope tan(beta). 0 past y_end.
     pub fn slope(&self, y: f64) -> f64 {
-        self.segment(y.abs())
-            .map_or(0.0, |(a, b)| (b[1] - a[1]) / (b[0] - a[0]))
+        self.height_and_slope(y).1
     }
 
     /// The first non-vertical segment with a[0] <= y <= b[0]. The half-breadths of f do not decrease

@@ -117,19 +117,37 @@ pub fn time_to_depth(m: &Motion, depth: f64, t_max: f64) -> Option<(f64, bool)> 
         }
         Motion::FreeHeave { speed0, .. } => Some((1.3 * depth / speed0, false)),
         _ => {
+            // Midpoint steps of t_max / n; within the step where the depth is passed or the speed
+            // changes sign the instant is found to rounding (linear in the depth, bisection on the
+            // speed), so the end time does not depend on the step.
             let n = 20_000;
             let dt = t_max / n as f64;
+            let speed = |t: f64| m.speed_at(t).unwrap_or(0.0);
             let mut z = 0.0;
+            let mut was_going_down = false;
             for k in 0..n {
                 let t = k as f64 * dt;
-                let v = m.speed_at(t + 0.5 * dt).unwrap_or(0.0);
+                let v = speed(t + 0.5 * dt);
                 if v <= 0.0 && t > 0.0 {
-                    return Some((t, true));
+                    if !was_going_down {
+                        return Some((t, true));
+                    }
+                    let mut bracket = (t - 0.5 * dt, t + 0.5 * dt);
+                    for _ in 0..60 {
+                        let mid = 0.5 * (bracket.0 + bracket.1);
+                        if speed(mid) > 0.0 {
+                            bracket.0 = mid;
+                        } else {
+                            bracket.1 = mid;
+                        }
+                    }
+                    return Some((bracket.1, true));
+                }
+                if v > 0.0 && z + dt * v >= depth {
+                    return Some((t + (depth - z) / v, false));
                 }
                 z += dt * v;
-                if z >= depth {
-                    return Some((t + dt, false));
-                }
+                was_going_down = v > 0.0;
             }
             None
         }
@@ -154,6 +172,13 @@ pub fn sensor_top_height(section: &Section, sensors: &[SensorSpec]) -> Option<f6
         .reduce(f64::max)
 }
 
+/// Longest automatic end time, s.
+pub const T_END_MAX_S: f64 = 60.0;
+
+/// The words of the end-time note when the keel never reaches the depth the impact needs within
+/// [`T_END_MAX_S`] (a creeping or rising body): the run would end before any impact.
+pub const NEVER_DEEP_ENOUGH: &str = "the keel never gets";
+
 /// End time: the impact is over when Wagner's wetted contour has reached the chine (or the widest point,
 /// or past the highest sensor: [`wetting_target`]) and the force has passed its maximum there
 /// ([`END_MARGIN`] times the wetting time), or when the entry velocity has fallen to zero, whichever
@@ -169,15 +194,17 @@ pub fn sensor_top_height(section: &Section, sensors: &[SensorSpec]) -> Option<f6
 /// For a section that starts immersed to the keel depth `d0` (0 for a keel entry), depths count from the
 /// start: the wetting uses Wagner's condition with the initial immersion
 /// ([`crate::analytic::entry_kinematics`]), and the cap is the keel 0.9 of the height deep in all.
-/// Longest automatic end time, s.
-pub const T_END_MAX_S: f64 = 60.0;
-
-/// The words of the end-time note when the keel never reaches the depth the impact needs within
-/// [`T_END_MAX_S`] (a creeping or rising body): the run would end before any impact.
-pub const NEVER_DEEP_ENOUGH: &str = "the keel never gets";
-
+///
+/// A prescribed motion is known only as far as its velocity table goes, so the run never goes past the
+/// table's end (a strip-theory profile ends where the relative velocity reverses or the keel is fully
+/// immersed; past it the section would begin to exit, which the run does not model). The table's last
+/// velocity is held after its end ([`Motion::speed_at`]) only in a run given a longer end time.
 pub fn end_time(section: &Section, m: &Motion, sensors: &[SensorSpec], dp: f64, d0: f64) -> Choice {
     let t_max = T_END_MAX_S;
+    let table_end = match m {
+        Motion::Prescribed { t_end, .. } if *t_end < t_max => Some(*t_end),
+        _ => None,
+    };
     let (y_target, what) = wetting_target(section, sensors);
     let min_depth = MIN_PENETRATION_DP * dp;
     let wet = if d0 > 0.0 {
@@ -206,7 +233,8 @@ pub fn end_time(section: &Section, m: &Motion, sensors: &[SensorSpec], dp: f64, 
         );
     }
     let depth = depth.min(0.9 * section.height() - d0);
-    match time_to_depth(m, depth, t_max) {
+    let reached = time_to_depth(m, depth, t_max).filter(|r| table_end.is_none_or(|te| r.0 <= te));
+    match reached {
         Some((t, true)) => Choice {
             value: t,
             note: format!("t_end = {t:.5} s: the entry velocity falls to zero before {what}"),
@@ -218,16 +246,23 @@ pub fn end_time(section: &Section, m: &Motion, sensors: &[SensorSpec], dp: f64, 
             let rev = time_to_depth(m, f64::INFINITY, tm.min(t_max))
                 .filter(|r| r.1)
                 .map_or(f64::INFINITY, |r| r.0);
-            let value = tm.min(cap).min(rev);
+            let value = tm.min(cap).min(rev).min(table_end.unwrap_or(t_max));
             Choice {
                 value,
                 note: format!(
                     "t_end = {value:.5} s: {END_MARGIN} x the time ({t:.5} s) at which {what}, so that the force \
-                     and the sensor pressures pass their maxima (at most until the entry velocity reverses or \
-                     the keel is 0.9 x the height deep)"
+                     and the sensor pressures pass their maxima (at most until the entry velocity reverses, \
+                     the keel is 0.9 x the height deep or the velocity table ends)"
                 ),
             }
         }
+        None if let Some(te) = table_end => Choice {
+            value: te,
+            note: format!(
+                "t_end = {te:.5} s: the velocity table ends before {what} (the keel {depth:.4} m deep); the \
+                 motion after the table is not given"
+            ),
+        },
         None => Choice {
             value: t_max,
             note: format!(
@@ -400,5 +435,33 @@ mod tests {
             c.note
         );
         assert!(c.note.contains("Wagner"), "{}", c.note);
+    }
+
+    /// A velocity table that ends with the section still creeping down, short of the depth the impact
+    /// needs (a strip-theory profile cut at the keel's full immersion by the relative motion, whose
+    /// integral of V falls short of it), ends the run at the table's end rather than holding the last
+    /// velocity to the 60 s cap; a table that reaches the depth keeps the usual end time, found to rounding
+    /// rather than to the search step.
+    #[test]
+    fn a_velocity_table_ends_the_run_at_its_end_at_the_latest() {
+        let beta = 20f64.to_radians();
+        let b = 0.2;
+        let sec = Section::wedge(beta, b, 1.5 * b * beta.tan()).unwrap();
+        let q = [sensor(0.05, 0.01)];
+        let creeping = Motion::prescribed(&[0.0, 0.01, 0.02], &[3.0, 1.0, 0.02]).unwrap();
+        let c = end_time(&sec, &creeping, &q, 0.002, 0.0);
+        assert_eq!(c.value, 0.02, "{}", c.note);
+        assert!(c.note.contains("velocity table ends"), "{}", c.note);
+        let long = Motion::prescribed(&[0.0, 1.0], &[3.0, 3.0]).unwrap();
+        let steady = end_time(&sec, &Motion::Constant { speed: 3.0 }, &q, 0.002, 0.0);
+        let c = end_time(&sec, &long, &q, 0.002, 0.0);
+        assert!(
+            (c.value - steady.value).abs() < 1e-9 * steady.value,
+            "{} against {}: {}",
+            c.value,
+            steady.value,
+            c.note
+        );
+        assert!(c.value < 1.0, "{}", c.note);
     }
 }

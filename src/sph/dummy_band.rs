@@ -29,7 +29,10 @@
 //! own depth. A keel segment too short to hold the deepest layer's first point (a section cut from a
 //! triangulated surface, or offsets closely spaced at the keel) is not a run of its own: it runs on into
 //! the curve beyond it, and the layers start dp/2 off the plane on that curve ([`holds_first_point`]).
-//! The lattice of the corners is aligned with the plane in the same way (y = dp/2, 3 dp/2,
+//! A run whose only segment with a direction is away from the plane (a keel segment shorter than the
+//! degenerate length before it) is placed along its chord, from the plane. The port runs place no
+//! points: the half band is the starboard band, and a deep port layer offset across the plane near the
+//! keel would take the place of the starboard layer's first point. The lattice of the corners is aligned with the plane in the same way (y = dp/2, 3 dp/2,
 //! ...), and no point is placed closer than the minimum gap to a mirror image.
 //!
 //! (Until 2026-11-29 a column of points at y = dp/2 and heights (k + 1/2) dp was placed first instead.
@@ -77,7 +80,14 @@ pub fn dummy_points(section: &Section, dp: f64, layers: usize, y_min: f64) -> Ve
     let runs = runs(&c, dp, mirror, depth - 0.5 * dp);
     for k in 0..layers {
         let d = (k as f64 + 0.5) * dp;
-        for run in &runs {
+        // With a symmetry plane the port runs are skipped: the half domain's band is the starboard
+        // band and its mirror image, and a deep layer of a port run near the keel reaches across the
+        // plane (its offset from a rising port side), where it would crowd out the starboard layer's
+        // first point.
+        for run in runs
+            .iter()
+            .filter(|r| !(mirror && c[r.start..=r.end].iter().all(|p| p[0] <= 0.0)))
+        {
             for p in layer_points(&c, run.clone(), d, dp, mirror) {
                 if (distance_to_polyline(&c, p[0], p[1]) - d).abs() < 0.3 * dp {
                     try_add(p, 0.6 * dp, &mut pts, &mut hash);
@@ -178,10 +188,12 @@ fn layer_points(c: &[[f64; 2]], run: Range<usize>, d: f64, dp: f64, mirror: bool
         .filter_map(|i| tangent(c, i, dp).map(|t| (i, t)))
         .collect();
     if segs.len() == 1 || (run.len() == 1 && mirror) {
-        // One segment: the points of the segment alone (`run.len() == 1` with a symmetry plane keeps a
-        // plane segment shorter than the degenerate length to the plane's own placement).
-        let i = segs.first().map_or(run.start, |s| s.0);
-        let w = [c[i], c[i + 1]];
+        // One segment with a direction: the points along the run's chord, which is that segment when
+        // the run has no other, and differs from it by less than the degenerate length for each other
+        // segment (so that a run starting with a degenerate segment on the plane is still placed from
+        // the plane). `run.len() == 1` with a symmetry plane keeps a plane segment shorter than the
+        // degenerate length to the plane's own placement.
+        let w = [c[run.start], c[run.end]];
         let (ty, tz) = (w[1][0] - w[0][0], w[1][1] - w[0][1]);
         let l = ty.hypot(tz);
         if l == 0.0 {
@@ -481,6 +493,46 @@ mod tests {
             let (first, next) = (layer[0], layer[1]);
             assert!(
                 (first[0] - 0.5 * dp).abs() < 1e-9,
+                "layer {k}: first point {:.3} dp off the plane",
+                first[0] / dp
+            );
+            let gap = (next[0] - first[0]).hypot(next[1] - first[1]) / dp;
+            assert!(
+                (0.9..1.1).contains(&gap),
+                "layer {k}: next point {gap:.3} dp on"
+            );
+        }
+    }
+
+    /// A keel segment shorter than the degenerate length (near-duplicate keel points of an import) has
+    /// no direction of its own, so the run it starts holds one segment with a direction, which does not
+    /// touch the plane. The run is placed along its chord from the plane, so every layer still starts
+    /// dp/2 off the plane with its next point about dp on. (Until 2026-11-30 the straight segment was
+    /// placed alone, as if away from the plane, and its first point fell within 0.3 dp of the plane,
+    /// too close to its mirror image; and the deepest layer of the port side, offset across the plane,
+    /// took the place of the starboard layer's first point. Gaps of 0.88 dp and 1.44 dp off the plane.)
+    #[test]
+    fn a_keel_segment_shorter_than_the_degenerate_length_leaves_no_gap_at_the_plane() {
+        let dp = 0.01;
+        let beta = 20f64.to_radians();
+        let (b, h) = (0.3, 0.3 * beta.tan());
+        let half = vec![[0.0, 0.0], [0.002 * dp, 0.0], [b, h], [b, 2.0 * h]];
+        let s = Section::from_half_points(half).unwrap();
+        let c = s.closed_contour();
+        let pts = dummy_points(&s, dp, 3, dp / 4.0);
+        for k in 0..3 {
+            let depth = (k as f64 + 0.5) * dp;
+            let mut layer: Vec<[f64; 2]> = pts
+                .iter()
+                .filter(|p| {
+                    p[1] < h && (distance_to_polyline(&c, p[0], p[1]) - depth).abs() < 0.25 * dp
+                })
+                .copied()
+                .collect();
+            layer.sort_by(|a, b| a[0].total_cmp(&b[0]));
+            let (first, next) = (layer[0], layer[1]);
+            assert!(
+                (first[0] - 0.5 * dp).abs() < 0.02 * dp,
                 "layer {k}: first point {:.3} dp off the plane",
                 first[0] / dp
             );

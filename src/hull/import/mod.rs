@@ -455,6 +455,15 @@ fn assemble(
             .file_stem()
             .map_or_else(|| "imported hull".into(), |s| s.to_string_lossy().into()),
     };
+    let min_gap = MIN_POINT_GAP_LPP * lpp;
+    let stations: Vec<(f64, Vec<[f64; 2]>)> = stations
+        .into_iter()
+        .map(|(x, points)| (x, tidy(points, min_gap)))
+        .collect();
+    notes.push(format!(
+        "points rounded to the micrometre, and points closer than {min_gap:.2e} m ({MIN_POINT_GAP_LPP} Lpp) to \
+         the point before them merged into it"
+    ));
     let description = format!(
         "Imported by `slamtool hull import` from {file}, {kind}. {}.",
         notes.join("; ")
@@ -477,7 +486,7 @@ fn assemble(
             .into_iter()
             .map(|(x, points)| StationSpec {
                 position: Position::X(x),
-                points: tidy(points),
+                points,
             })
             .collect(),
         sensors: vec![],
@@ -485,12 +494,32 @@ fn assemble(
     Ok(Imported { spec, notes })
 }
 
+/// Closest spacing of two points of an imported section, as a fraction of the length between
+/// perpendiculars: a cut through a triangulated surface next to a vertex gives points a fraction of a
+/// millimetre apart on a ship (0.2 mm on a 120 m hull), which no offset table means.
+pub const MIN_POINT_GAP_LPP: f64 = 1e-5;
+
 /// Points rounded to the micrometre the hull file keeps, with points that then repeat dropped (the
-/// near-zero breadths a cut close to a stem gives would otherwise become repeated points).
-fn tidy(points: Vec<[f64; 2]>) -> Vec<[f64; 2]> {
+/// near-zero breadths a cut close to a stem gives would otherwise become repeated points), and points
+/// closer than `min_gap` to the point kept before them merged into it. The keel point and the top
+/// point are kept: a top point too close to the one before replaces it.
+fn tidy(points: Vec<[f64; 2]>, min_gap: f64) -> Vec<[f64; 2]> {
     let round = |v: f64| (v * 1e6).round() / 1e6 + 0.0;
-    let mut out: Vec<[f64; 2]> = points.iter().map(|p| [round(p[0]), round(p[1])]).collect();
-    out.dedup();
+    let mut out: Vec<[f64; 2]> = Vec::with_capacity(points.len());
+    let close = |a: [f64; 2], b: [f64; 2]| (a[0] - b[0]).hypot(a[1] - b[1]) < min_gap;
+    let last = points.len().saturating_sub(1);
+    for (k, p) in points.iter().enumerate() {
+        let p = [round(p[0]), round(p[1])];
+        match out.last() {
+            Some(&q) if q == p => {}
+            Some(&q) if close(q, p) && k == last && out.len() > 1 => {
+                out.pop();
+                out.push(p);
+            }
+            Some(&q) if close(q, p) && k < last => {}
+            _ => out.push(p),
+        }
+    }
     out
 }
 
@@ -505,7 +534,10 @@ fn resample(imported: &mut Imported, n: usize) -> Result<()> {
         let x = a + (f - a) * i as f64 / (n - 1) as f64;
         stations.push(StationSpec {
             position: Position::X(x),
-            points: tidy(hull.section_at(x)?.points),
+            points: tidy(
+                hull.section_at(x)?.points,
+                MIN_POINT_GAP_LPP * imported.spec.lpp,
+            ),
         });
     }
     imported.spec.stations = stations;
@@ -514,4 +546,31 @@ fn resample(imported: &mut Imported, n: usize) -> Result<()> {
         imported.spec.description
     );
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::tidy;
+
+    /// A point of a cut a fraction of a millimetre from the one before it (a triangle vertex next to the
+    /// cut plane) is merged into it; the keel and the top point stay, and a top point too close to the
+    /// one before replaces it.
+    #[test]
+    fn points_closer_than_the_gap_are_merged_and_the_ends_kept() {
+        let gap = 1.2e-3;
+        let cut = vec![
+            [0.0, 0.0],
+            [0.000196, 0.000005],
+            [0.5, 0.2],
+            [0.5000004, 0.2000003],
+            [1.0, 1.0],
+            [1.0002, 1.0004],
+        ];
+        assert_eq!(
+            tidy(cut, gap),
+            vec![[0.0, 0.0], [0.5, 0.2], [1.0002, 1.0004]]
+        );
+        let two = vec![[0.0, 0.0], [0.0001, 0.0001]];
+        assert_eq!(tidy(two.clone(), gap), two);
+    }
 }
