@@ -127,6 +127,36 @@ fn summary(r: &SweepResult) -> String {
     s
 }
 
+/// Warnings printed in full up to this many; beyond it one of each kind with its count.
+const WARNINGS_IN_FULL: usize = 12;
+
+/// The sweep's warnings on the terminal: each in full when there are few; otherwise one of each kind
+/// (warnings that differ only in their numbers, [`results::warning_kinds`]) with the number of its kind,
+/// and where all of them are.
+fn print_warnings(warnings: &[String]) {
+    if warnings.len() <= WARNINGS_IN_FULL {
+        for w in warnings {
+            println!("{}", global::warning_line(w));
+        }
+        return;
+    }
+    let kinds = results::warning_kinds(warnings);
+    println!(
+        "\n{} warnings of {} kinds (warnings that differ only in their numbers are one kind); one of each \
+         below, all of them in sweep.json (\"warnings\") and the report:",
+        warnings.len(),
+        kinds.len()
+    );
+    for (w, n) in kinds {
+        let text = if n > 1 {
+            format!("[{n} like this] {w}")
+        } else {
+            w.to_string()
+        };
+        println!("{}", global::warning_line(&text));
+    }
+}
+
 fn report(r: &SweepResult, out: &Path, extra: serde_json::Value, json: bool) -> Result<()> {
     if json {
         for w in &r.warnings {
@@ -146,9 +176,7 @@ fn report(r: &SweepResult, out: &Path, extra: serde_json::Value, json: bool) -> 
         global::print_json(v);
     } else {
         print!("{}", summary(r));
-        for w in &r.warnings {
-            println!("{}", global::warning_line(w));
-        }
+        print_warnings(&r.warnings);
         println!("\n{}", global::files_written_line(out));
     }
     if r.failed_cases > 0 {

@@ -258,6 +258,42 @@ pub fn warnings_of(cases: &[CaseResult]) -> Vec<String> {
         .collect()
 }
 
+/// The warnings grouped by kind: warnings that differ only in their numbers (values, stations, speeds,
+/// case names) are of one kind. Each kind is given by its first warning and the number of warnings of
+/// that kind, in the order of first appearance, so that a long sweep's hundreds of warnings can be read
+/// as a handful (every warning stays in `sweep.json` and the report).
+pub fn warning_kinds(warnings: &[String]) -> Vec<(&str, usize)> {
+    let mut kinds: Vec<(String, &str, usize)> = Vec::new();
+    for w in warnings {
+        let t = without_numbers(w);
+        match kinds.iter_mut().find(|k| k.0 == t) {
+            Some(k) => k.2 += 1,
+            None => kinds.push((t, w, 1)),
+        }
+    }
+    kinds.into_iter().map(|(_, w, n)| (w, n)).collect()
+}
+
+/// `text` with every number (a run of digits, with the decimal points between them) replaced by `#`.
+fn without_numbers(text: &str) -> String {
+    let c: Vec<char> = text.chars().collect();
+    let digit = |k: usize| c.get(k).is_some_and(|d| d.is_ascii_digit());
+    let mut out = String::with_capacity(text.len());
+    let mut k = 0;
+    while k < c.len() {
+        if digit(k) {
+            while digit(k) || (c.get(k) == Some(&'.') && digit(k + 1)) {
+                k += 1;
+            }
+            out.push('#');
+        } else {
+            out.push(c[k]);
+            k += 1;
+        }
+    }
+    out
+}
+
 fn num(v: Option<f64>) -> String {
     v.map_or(String::new(), csv_number)
 }
@@ -554,5 +590,23 @@ mod tests {
             ["a (cases c1, c2, c3 and 2 more)", "b (case c1)"]
         );
         assert!(warnings_of(&[case("c1", &[])]).is_empty());
+    }
+
+    /// Warnings that differ only in their numbers are one kind, counted, with the first as its example.
+    #[test]
+    fn warnings_that_differ_in_their_numbers_are_one_kind() {
+        let w: Vec<String> = [
+            "station 0.093 Lpp: keel rises at 0.0133 (case c0001)",
+            "no design event at 1.000 m/s (cases c0000, c0002 and 47 more)",
+            "station 0.133 Lpp: keel rises at 0.0133 (case c0007)",
+            "no design event at 1.100 m/s (cases c0050, c0051 and 47 more)",
+            "station 0.133 Lpp: keel rises at 0.0133. (case c0009)",
+        ]
+        .map(String::from)
+        .to_vec();
+        assert_eq!(
+            warning_kinds(&w),
+            vec![(w[0].as_str(), 2), (w[1].as_str(), 2), (w[4].as_str(), 1)]
+        );
     }
 }

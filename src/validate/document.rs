@@ -226,7 +226,7 @@ fn is_rule(cell: &str) -> bool {
 
 /// `text` as a sentence: with a full stop at its end unless it already ends with one (a provenance that
 /// ends in an abbreviation or a sentence of its own).
-fn sentence(text: &str) -> String {
+pub(super) fn sentence(text: &str) -> String {
     let t = text.trim_end();
     if t.ends_with('.') {
         t.to_string()

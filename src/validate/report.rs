@@ -186,7 +186,10 @@ pub fn markdown(s: &Suite) -> String {
         if let Some(Reference::Pending { reason }) = &c.reference {
             out += &format!("*Pending data:* {reason}\n\n");
         }
-        out += &format!("*Provenance:* {}.\n\n", c.provenance);
+        out += &format!(
+            "*Provenance:* {}\n\n",
+            super::document::sentence(&c.provenance)
+        );
         for n in case_inputs(c) {
             out += &format!("- {n}\n");
         }
