@@ -256,18 +256,20 @@ pub fn end_time(section: &Section, m: &Motion, sensors: &[SensorSpec], dp: f64, 
                 ),
             }
         }
-        None if let Some(te) = table_end => Choice {
-            value: te,
-            note: format!(
-                "t_end = {te:.5} s: the velocity table ends before {what} (the keel {depth:.4} m deep); the \
-                 motion after the table is not given"
-            ),
-        },
-        None => Choice {
-            value: t_max,
-            note: format!(
-                "t_end = {t_max} s: {NEVER_DEEP_ENOUGH} {depth:.4} m deep within that time"
-            ),
+        None => match table_end {
+            Some(te) => Choice {
+                value: te,
+                note: format!(
+                    "t_end = {te:.5} s: the velocity table ends before {what} (the keel {depth:.4} m deep); \
+                     the motion after the table is not given"
+                ),
+            },
+            None => Choice {
+                value: t_max,
+                note: format!(
+                    "t_end = {t_max} s: {NEVER_DEEP_ENOUGH} {depth:.4} m deep within that time"
+                ),
+            },
         },
     }
 }

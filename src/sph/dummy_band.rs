@@ -32,8 +32,9 @@
 //! A run whose only segment with a direction is away from the plane (a keel segment shorter than the
 //! degenerate length before it) is placed along its chord, from the plane. The port runs place no
 //! points: the half band is the starboard band, and a deep port layer offset across the plane near the
-//! keel would take the place of the starboard layer's first point. The lattice of the corners is aligned with the plane in the same way (y = dp/2, 3 dp/2,
-//! ...), and no point is placed closer than the minimum gap to a mirror image.
+//! keel would take the place of the starboard layer's first point. The lattice of the corners is aligned
+//! with the plane in the same way (y = dp/2, 3 dp/2, ...), and no point is placed closer than the minimum
+//! gap to a mirror image.
 //!
 //! (Until 2026-11-29 a column of points at y = dp/2 and heights (k + 1/2) dp was placed first instead.
 //! At a V keel its lowest point sat almost on the wall and pushed the layers' first points aside: the
