@@ -130,30 +130,27 @@ fn summary(r: &SweepResult) -> String {
 /// Warnings printed in full up to this many; beyond it one of each kind with its count.
 const WARNINGS_IN_FULL: usize = 12;
 
-/// The sweep's warnings on the terminal: each in full when there are few; otherwise one of each kind
-/// (warnings that differ only in their numbers, [`results::warning_kinds`]) with the number of its kind,
-/// and where all of them are.
-fn print_warnings(warnings: &[String]) {
-    if warnings.len() <= WARNINGS_IN_FULL {
-        for w in warnings {
+/// The sweep's warnings on the terminal: each in full when there are few; otherwise each kind once
+/// (warnings that differ only in their numbers, with each number's range over the kind:
+/// [`results::warning_kinds`]) with the number of cases that gave it, and where all of them are.
+fn print_warnings(r: &SweepResult) {
+    if r.warnings.len() <= WARNINGS_IN_FULL {
+        for w in &r.warnings {
             println!("{}", global::warning_line(w));
         }
         return;
     }
-    let kinds = results::warning_kinds(warnings);
+    let kinds = results::warning_kinds(&r.cases);
     println!(
-        "\n{} warnings of {} kinds (warnings that differ only in their numbers are one kind); one of each \
-         below, all of them in sweep.json (\"warnings\") and the report:",
-        warnings.len(),
+        "\n{} distinct warnings of {} kinds (warnings that differ only in their numbers are one kind; each number \
+         below is its range over the kind, lowest..highest); all of them, with their cases, are in sweep.json \
+         (\"warnings\") and the report:",
+        r.warnings.len(),
         kinds.len()
     );
     for (w, n) in kinds {
-        let text = if n > 1 {
-            format!("[{n} like this] {w}")
-        } else {
-            w.to_string()
-        };
-        println!("{}", global::warning_line(&text));
+        let cases = if n == 1 { "case" } else { "cases" };
+        println!("{}", global::warning_line(&format!("[{n} {cases}] {w}")));
     }
 }
 
@@ -176,7 +173,7 @@ fn report(r: &SweepResult, out: &Path, extra: serde_json::Value, json: bool) -> 
         global::print_json(v);
     } else {
         print!("{}", summary(r));
-        print_warnings(&r.warnings);
+        print_warnings(r);
         println!("\n{}", global::files_written_line(out));
     }
     if r.failed_cases > 0 {

@@ -258,40 +258,94 @@ pub fn warnings_of(cases: &[CaseResult]) -> Vec<String> {
         .collect()
 }
 
-/// The warnings grouped by kind: warnings that differ only in their numbers (values, stations, speeds,
-/// case names) are of one kind. Each kind is given by its first warning and the number of warnings of
-/// that kind, in the order of first appearance, so that a long sweep's hundreds of warnings can be read
-/// as a handful (every warning stays in `sweep.json` and the report).
-pub fn warning_kinds(warnings: &[String]) -> Vec<(&str, usize)> {
-    let mut kinds: Vec<(String, &str, usize)> = Vec::new();
-    for w in warnings {
-        let t = without_numbers(w);
-        match kinds.iter_mut().find(|k| k.0 == t) {
-            Some(k) => k.2 += 1,
-            None => kinds.push((t, w, 1)),
+/// The cases' warnings grouped by kind: warnings that differ only in their numbers (values, stations,
+/// speeds) are of one kind. Each kind is given as its text with every number replaced by the range of
+/// that number over the kind ("0.093..0.227" where the warnings differ, the number where they agree),
+/// with the number of cases that gave it, in the order of first appearance, so that a long sweep's
+/// hundreds of warnings can be read as a handful (every warning stays in `sweep.json` and the report).
+/// The ranges are taken number by number: they bound the kind's warnings, they do not pair up.
+pub fn warning_kinds(cases: &[CaseResult]) -> Vec<(String, usize)> {
+    struct Kind {
+        text: Vec<String>,
+        ranges: Vec<(String, String)>,
+        cases: usize,
+        last_case: usize,
+    }
+    let mut kinds: Vec<Kind> = Vec::new();
+    let all = cases
+        .iter()
+        .enumerate()
+        .flat_map(|(i, c)| c.warnings.iter().map(move |w| (i, w)));
+    for (case, w) in all {
+        let (text, numbers) = split_numbers(w);
+        match kinds.iter_mut().find(|k| k.text == text) {
+            Some(k) => {
+                if k.last_case != case {
+                    (k.cases, k.last_case) = (k.cases + 1, case);
+                }
+                for (r, x) in k.ranges.iter_mut().zip(numbers) {
+                    if number_order(&x, &r.0).is_lt() {
+                        r.0 = x;
+                    } else if number_order(&x, &r.1).is_gt() {
+                        r.1 = x;
+                    }
+                }
+            }
+            None => kinds.push(Kind {
+                text,
+                ranges: numbers.into_iter().map(|x| (x.clone(), x)).collect(),
+                cases: 1,
+                last_case: case,
+            }),
         }
     }
-    kinds.into_iter().map(|(_, w, n)| (w, n)).collect()
+    kinds
+        .into_iter()
+        .map(|k| {
+            let mut out = k.text[0].clone();
+            for ((lo, hi), piece) in k.ranges.iter().zip(&k.text[1..]) {
+                if lo == hi {
+                    out.push_str(lo);
+                } else {
+                    out.push_str(&format!("{lo}..{hi}"));
+                }
+                out.push_str(piece);
+            }
+            (out, k.cases)
+        })
+        .collect()
 }
 
-/// `text` with every number (a run of digits, with the decimal points between them) replaced by `#`.
-fn without_numbers(text: &str) -> String {
+/// The order of two numbers as written: by value where both read as numbers, else as text (a version
+/// or a date).
+fn number_order(a: &str, b: &str) -> std::cmp::Ordering {
+    match (a.parse::<f64>(), b.parse::<f64>()) {
+        (Ok(x), Ok(y)) => x.total_cmp(&y),
+        _ => a.cmp(b),
+    }
+}
+
+/// `text` cut at its numbers (runs of digits, with the decimal points between them): the pieces of text
+/// around them (one more than the numbers) and the numbers as written.
+fn split_numbers(text: &str) -> (Vec<String>, Vec<String>) {
     let c: Vec<char> = text.chars().collect();
     let digit = |k: usize| c.get(k).is_some_and(|d| d.is_ascii_digit());
-    let mut out = String::with_capacity(text.len());
+    let (mut pieces, mut numbers) = (vec![String::new()], Vec::new());
     let mut k = 0;
     while k < c.len() {
         if digit(k) {
+            let start = k;
             while digit(k) || (c.get(k) == Some(&'.') && digit(k + 1)) {
                 k += 1;
             }
-            out.push('#');
+            numbers.push(c[start..k].iter().collect());
+            pieces.push(String::new());
         } else {
-            out.push(c[k]);
+            pieces.last_mut().unwrap().push(c[k]);
             k += 1;
         }
     }
-    out
+    (pieces, numbers)
 }
 
 fn num(v: Option<f64>) -> String {
@@ -592,21 +646,38 @@ mod tests {
         assert!(warnings_of(&[case("c1", &[])]).is_empty());
     }
 
-    /// Warnings that differ only in their numbers are one kind, counted, with the first as its example.
+    /// Warnings that differ only in their numbers are one kind, with the number of cases that gave it
+    /// and each number given as its range over the kind.
     #[test]
     fn warnings_that_differ_in_their_numbers_are_one_kind() {
-        let w: Vec<String> = [
-            "station 0.093 Lpp: keel rises at 0.0133 (case c0001)",
-            "no design event at 1.000 m/s (cases c0000, c0002 and 47 more)",
-            "station 0.133 Lpp: keel rises at 0.0133 (case c0007)",
-            "no design event at 1.100 m/s (cases c0050, c0051 and 47 more)",
-            "station 0.133 Lpp: keel rises at 0.0133. (case c0009)",
-        ]
-        .map(String::from)
-        .to_vec();
+        let cases = [
+            case(
+                "c1",
+                &[
+                    "station 0.093 Lpp: keel rises at 0.0133",
+                    "no design event at 1.000 m/s",
+                    "station 0.133 Lpp: keel rises at 0.0133",
+                ],
+            ),
+            case("c2", &["no design event at 1.100 m/s"]),
+            case(
+                "c3",
+                &[
+                    "station 0.133 Lpp: keel rises at 0.0133.",
+                    "station 0.05 Lpp: keel rises at 0.0133",
+                ],
+            ),
+        ];
         assert_eq!(
-            warning_kinds(&w),
-            vec![(w[0].as_str(), 2), (w[1].as_str(), 2), (w[4].as_str(), 1)]
+            warning_kinds(&cases),
+            vec![
+                (
+                    "station 0.05..0.133 Lpp: keel rises at 0.0133".to_string(),
+                    2
+                ),
+                ("no design event at 1.000..1.100 m/s".to_string(), 2),
+                ("station 0.133 Lpp: keel rises at 0.0133.".to_string(), 1)
+            ]
         );
     }
 }
