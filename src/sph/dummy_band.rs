@@ -479,30 +479,7 @@ mod tests {
             [7.151185, 10.0],
         ];
         let s = Section::from_half_points(half).unwrap();
-        let c = s.closed_contour();
-        let pts = dummy_points(&s, dp, 3, dp / 4.0);
-        for k in 0..3 {
-            let depth = (k as f64 + 0.5) * dp;
-            let mut layer: Vec<[f64; 2]> = pts
-                .iter()
-                .filter(|p| {
-                    p[1] < 1.0 && (distance_to_polyline(&c, p[0], p[1]) - depth).abs() < 0.25 * dp
-                })
-                .copied()
-                .collect();
-            layer.sort_by(|a, b| a[0].total_cmp(&b[0]));
-            let (first, next) = (layer[0], layer[1]);
-            assert!(
-                (first[0] - 0.5 * dp).abs() < 1e-9,
-                "layer {k}: first point {:.3} dp off the plane",
-                first[0] / dp
-            );
-            let gap = (next[0] - first[0]).hypot(next[1] - first[1]) / dp;
-            assert!(
-                (0.9..1.1).contains(&gap),
-                "layer {k}: next point {gap:.3} dp on"
-            );
-        }
+        layers_start_off_the_plane(&s, dp, 1.0, 1e-9);
     }
 
     /// A keel segment shorter than the degenerate length (near-duplicate keel points of an import) has
@@ -519,21 +496,27 @@ mod tests {
         let (b, h) = (0.3, 0.3 * beta.tan());
         let half = vec![[0.0, 0.0], [0.002 * dp, 0.0], [b, h], [b, 2.0 * h]];
         let s = Section::from_half_points(half).unwrap();
+        layers_start_off_the_plane(&s, dp, h, 0.02 * dp);
+    }
+
+    /// Every one of the three layers of the half band of `s` below the height `z_max` starts dp/2 off
+    /// the symmetry plane (within `tol`) and has its next point 0.9-1.1 dp on.
+    fn layers_start_off_the_plane(s: &Section, dp: f64, z_max: f64, tol: f64) {
         let c = s.closed_contour();
-        let pts = dummy_points(&s, dp, 3, dp / 4.0);
+        let pts = dummy_points(s, dp, 3, dp / 4.0);
         for k in 0..3 {
             let depth = (k as f64 + 0.5) * dp;
             let mut layer: Vec<[f64; 2]> = pts
                 .iter()
                 .filter(|p| {
-                    p[1] < h && (distance_to_polyline(&c, p[0], p[1]) - depth).abs() < 0.25 * dp
+                    p[1] < z_max && (distance_to_polyline(&c, p[0], p[1]) - depth).abs() < 0.25 * dp
                 })
                 .copied()
                 .collect();
             layer.sort_by(|a, b| a[0].total_cmp(&b[0]));
             let (first, next) = (layer[0], layer[1]);
             assert!(
-                (first[0] - 0.5 * dp).abs() < 0.02 * dp,
+                (first[0] - 0.5 * dp).abs() < tol,
                 "layer {k}: first point {:.3} dp off the plane",
                 first[0] / dp
             );
