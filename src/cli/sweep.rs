@@ -127,14 +127,11 @@ fn summary(r: &SweepResult) -> String {
     s
 }
 
-/// Warnings printed in full up to this many; beyond it one of each kind with its count.
-const WARNINGS_IN_FULL: usize = 12;
-
 /// The sweep's warnings on the terminal: each in full when there are few; otherwise each kind once
 /// (warnings that differ only in their numbers, with each number's range over the kind:
 /// [`results::warning_kinds`]) with the number of cases that gave it, and where all of them are.
 fn print_warnings(r: &SweepResult) {
-    if r.warnings.len() <= WARNINGS_IN_FULL {
+    if r.warnings.len() <= results::WARNINGS_IN_FULL {
         for w in &r.warnings {
             println!("{}", global::warning_line(w));
         }

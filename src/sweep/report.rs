@@ -112,6 +112,23 @@ pub fn document(r: &SweepResult) -> Result<Document> {
             rows: failed,
         });
     }
+    if r.warnings.len() > super::results::WARNINGS_IN_FULL {
+        let kinds = super::results::warning_kinds(&r.cases);
+        blocks.push(Block::Paragraph(format!(
+            "{} distinct warnings of {} kinds. Warnings that differ only in their numbers are one kind; \
+             each kind is given once, with the number of cases that gave it and each number as its range \
+             over the kind (lowest..highest, number by number). Every warning follows, with its cases.",
+            r.warnings.len(),
+            kinds.len()
+        )));
+        let cases = |n: usize| if n == 1 { "case" } else { "cases" };
+        blocks.push(Block::List(
+            kinds
+                .into_iter()
+                .map(|(w, n)| format!("[{n} {}] {w}", cases(n)))
+                .collect(),
+        ));
+    }
     if !r.warnings.is_empty() {
         blocks.push(Block::List(r.warnings.clone()));
     }

@@ -258,6 +258,10 @@ pub fn warnings_of(cases: &[CaseResult]) -> Vec<String> {
         .collect()
 }
 
+/// Warnings a sweep prints (and its report lists) one by one up to this many; beyond it they are also
+/// given by kind ([`warning_kinds`]).
+pub const WARNINGS_IN_FULL: usize = 12;
+
 /// The cases' warnings grouped by kind: warnings that differ only in their numbers (values, stations,
 /// speeds) are of one kind. Each kind is given as its text with every number replaced by the range of
 /// that number over the kind ("0.093..0.227" where the warnings differ, the number where they agree),
