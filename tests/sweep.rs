@@ -1,8 +1,9 @@
 //! `slamtool sweep` and `slamtool merge`: a sweep stopped part-way and resumed gives exactly the result of
 //! an uninterrupted run (also after SIGKILL), two shards merged give the unsharded result, the scheduler
 //! variables pick the shards the job scripts expect, bad ranges and invalid hull variants are located in
-//! the sweep file, and merge refuses shards of different sweeps or tool versions. Small analytic sweeps on
-//! the Ochi hull in Ochi's regular wave (a second or two each).
+//! the sweep file, merge refuses shards of different sweeps or tool versions, and many warnings print as
+//! kinds. Small analytic sweeps on the Ochi hull in Ochi's regular wave or the model-scale irregular sea
+//! (a few seconds each).
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -442,4 +443,69 @@ fn a_sweep_case_gets_the_flare_event_of_an_immersed_keel() {
     let (swept, assessed) = (p1.design_pressure_pa.unwrap(), q.value.unwrap());
     let rel = (swept - assessed).abs() / assessed;
     assert!(rel < 1e-3, "sweep {swept} vs assess {assessed}");
+}
+
+/// Beyond a dozen warnings the terminal gives each kind once (warnings that differ only in their
+/// numbers), with the number of cases that gave it: on a small sweep in the model-scale irregular sea,
+/// the kind "no design event at station ..." is printed once with its number of cases as `sweep.json`
+/// counts them, and the lines printed are as many as the kinds announced.
+#[test]
+fn many_warnings_print_as_kinds_with_their_cases() {
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("kinds.toml");
+    std::fs::write(
+        &f,
+        format!(
+            "name = \"kinds\"\nhull = \"{ROOT}/hulls/ochi-vform.toml\"\nsea = \"{ROOT}/sweeps/ochi-sea.toml\"\n\
+             loading = \"test-condition\"\nfidelity = \"analytic\"\n\n[grid]\n\
+             speed_m_s = {{ start = 1.0, stop = 1.5, step = 0.1 }}\nwave_height_m = [0.1, 0.2]\n\
+             wavelength_m = [4.5, 6.0]\n"
+        ),
+    )
+    .unwrap();
+    let out = dir.path().join("out");
+    let o = slamtool(
+        &["sweep", f.to_str().unwrap(), "-o", out.to_str().unwrap()],
+        &[],
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    let json: serde_json::Value = serde_json::from_str(&read(&out.join("sweep.json"))).unwrap();
+    let distinct = json["warnings"].as_array().unwrap().len();
+    assert!(
+        distinct > sweep::results::WARNINGS_IN_FULL,
+        "the sweep gives only {distinct} warnings: enlarge its grid"
+    );
+    let header = stdout
+        .lines()
+        .find(|l| l.starts_with(&format!("{distinct} distinct warnings of ")))
+        .unwrap_or_else(|| panic!("no kinds header in\n{stdout}"));
+    let kinds: usize = header.split(' ').nth(4).unwrap().parse().unwrap();
+    let lines: Vec<&str> = stdout
+        .lines()
+        .filter(|l| l.starts_with("warning: ["))
+        .collect();
+    assert_eq!(lines.len(), kinds, "{stdout}");
+    let no_event = lines
+        .iter()
+        .filter(|l| l.contains("] no design event at station"))
+        .collect::<Vec<_>>();
+    assert_eq!(no_event.len(), 1, "{stdout}");
+    let cases_with = json["cases"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|c| {
+            c["warnings"].as_array().unwrap().iter().any(|w| {
+                w.as_str()
+                    .unwrap()
+                    .starts_with("no design event at station")
+            })
+        })
+        .count();
+    assert!(
+        no_event[0].starts_with(&format!("warning: [{cases_with} cases] ")),
+        "{} against {cases_with} cases",
+        no_event[0]
+    );
 }
