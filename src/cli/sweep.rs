@@ -145,9 +145,8 @@ fn print_warnings(r: &SweepResult) {
         r.warnings.len(),
         kinds.len()
     );
-    for (w, n) in kinds {
-        let cases = if n == 1 { "case" } else { "cases" };
-        println!("{}", global::warning_line(&format!("[{n} {cases}] {w}")));
+    for k in &kinds {
+        println!("{}", global::warning_line(&results::kind_line(k)));
     }
 }
 

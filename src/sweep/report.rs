@@ -121,12 +121,8 @@ pub fn document(r: &SweepResult) -> Result<Document> {
             r.warnings.len(),
             kinds.len()
         )));
-        let cases = |n: usize| if n == 1 { "case" } else { "cases" };
         blocks.push(Block::List(
-            kinds
-                .into_iter()
-                .map(|(w, n)| format!("[{n} {}] {w}", cases(n)))
-                .collect(),
+            kinds.iter().map(super::results::kind_line).collect(),
         ));
     }
     if !r.warnings.is_empty() {

@@ -320,6 +320,12 @@ pub fn warning_kinds(cases: &[CaseResult]) -> Vec<(String, usize)> {
         .collect()
 }
 
+/// A kind of [`warning_kinds`] as one line: "[n cases] text".
+pub fn kind_line((text, cases): &(String, usize)) -> String {
+    let noun = if *cases == 1 { "case" } else { "cases" };
+    format!("[{cases} {noun}] {text}")
+}
+
 /// The order of two numbers as written: by value where both read as numbers, else as text (a version
 /// or a date).
 fn number_order(a: &str, b: &str) -> std::cmp::Ordering {
