@@ -176,6 +176,21 @@ fn study(deg: f64, n_half: f64, method: SensorMethod, divergence_correction: boo
             setup.c0
         );
     }
+    // `CONV_PROFILE=1`: the sensor records collapsed on the similarity variable (diagnosis).
+    if std::env::var("CONV_PROFILE").is_ok_and(|v| v == "1") {
+        let centres: Vec<f64> = run
+            .summary
+            .sensors
+            .iter()
+            .zip(&setup.sensors)
+            .map(|(named, s)| {
+                named
+                    .integration_span_m
+                    .map_or(s.s_m, |[a, b]| 0.5 * (a + b))
+            })
+            .collect();
+        print_profile(deg, &h.t, &h.sensors, &centres, t_end, &sim.pressure);
+    }
     let ratio: Vec<f64> = h.t.iter().zip(&h.fz).map(|(t, f)| f / (cf * t)).collect();
     // `CONV_FORCE_TRACE=1`: F / F_similarity over tenths of the run (window means).
     if std::env::var("CONV_FORCE_TRACE").is_ok_and(|v| v == "1") {
@@ -204,6 +219,59 @@ fn study(deg: f64, n_half: f64, method: SensorMethod, divergence_correction: boo
     };
     print_study(&st);
     st
+}
+
+/// The sensor records collapsed on the similarity variable: a sensor at arc length s from the keel
+/// sits at z / (V t) = s sin(beta) / (V t) - 1 (apex at -1), so in a self-similar flow every record is
+/// a piece of one profile Cp(z / (V t)). Printed for two windows of the run, in bins of 0.1: the mean
+/// SPH Cp of the samples in the bin and the mean of the similarity Cp at the same samples' positions
+/// (interpolated between its panel midpoints), and their ratio. The bins behind the spray root tell
+/// whether the wetted wall carries the similarity pressure; those at the root are smeared by the
+/// sensors' span and the filter-free records.
+fn print_profile(
+    deg: f64,
+    t: &[f64],
+    records: &[Vec<f64>],
+    centres: &[f64],
+    t_end: f64,
+    reference: &[[f64; 2]],
+) {
+    let q = 0.5 * 1000.0 * SPEED * SPEED;
+    let sin_b = deg.to_radians().sin();
+    let cp_ref = |x: f64| {
+        let k = reference.partition_point(|p| p[0] < x);
+        if k == 0 || k == reference.len() {
+            return if k == 0 { reference[0][1] } else { 0.0 };
+        }
+        let ([x0, y0], [x1, y1]) = (reference[k - 1], reference[k]);
+        y0 + (y1 - y0) * (x - x0) / (x1 - x0)
+    };
+    for (a, b) in [(0.3, 0.6), (0.6, 0.95)] {
+        let mut bins = vec![(0.0, 0.0, 0usize); 17];
+        for (k, &tk) in t.iter().enumerate() {
+            if tk < a * t_end || tk > b * t_end {
+                continue;
+            }
+            for (rec, &s) in records.iter().zip(centres) {
+                let x = s * sin_b / (SPEED * tk) - 1.0;
+                let m = ((x + 1.0) / 0.1).floor();
+                if (0.0..17.0).contains(&m) {
+                    let bin = &mut bins[m as usize];
+                    bin.0 += rec[k] / q;
+                    bin.1 += cp_ref(x);
+                    bin.2 += 1;
+                }
+            }
+        }
+        println!("profile, t in [{a}, {b}] t_end: z/(V t), Cp SPH, Cp similarity, ratio");
+        for (m, (sph, sim, n)) in bins.iter().enumerate() {
+            if *n > 0 {
+                let n = *n as f64;
+                let x = -0.95 + 0.1 * m as f64;
+                println!("  {x:+.2} {:6.2} {:6.2} {:.3}", sph / n, sim / n, sph / sim);
+            }
+        }
+    }
 }
 
 fn print_study(st: &Study) {
