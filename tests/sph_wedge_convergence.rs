@@ -28,7 +28,7 @@ use common::sph::{WEDGE_HALF_BEAM, wedge_setup, window_mean};
 use slamtool::analytic::similarity_sensor::solution;
 use slamtool::loads::peaks::summarise;
 use slamtool::sph::{self, Overrides, RunOptions, SensorMethod};
-use slamtool::validate::wedges::like_for_like;
+use slamtool::validate::wedges::{like_for_like, reference_span};
 
 /// Zero-phase low-pass applied to every sensor history and to the reference (Hz).
 const CUTOFF_HZ: f64 = 2000.0;
@@ -178,18 +178,13 @@ fn study(deg: f64, n_half: f64, method: SensorMethod, divergence_correction: boo
     }
     // `CONV_PROFILE=1`: the sensor records collapsed on the similarity variable (diagnosis).
     if std::env::var("CONV_PROFILE").is_ok_and(|v| v == "1") {
-        let centres: Vec<f64> = run
-            .summary
+        let centres: Vec<f64> = setup
             .sensors
             .iter()
-            .zip(&setup.sensors)
-            .map(|(named, s)| {
-                named
-                    .integration_span_m
-                    .map_or(s.s_m, |[a, b]| 0.5 * (a + b))
-            })
+            .zip(&run.summary.sensors)
+            .map(|(s, named)| reference_span(s, named).0)
             .collect();
-        print_profile(deg, &h.t, &h.sensors, &centres, t_end, &sim.pressure);
+        print_profile(deg, q, &h.t, &h.sensors, &centres, t_end, &sim.pressure);
     }
     let ratio: Vec<f64> = h.t.iter().zip(&h.fz).map(|(t, f)| f / (cf * t)).collect();
     // `CONV_FORCE_TRACE=1`: F / F_similarity over tenths of the run (window means).
@@ -230,13 +225,13 @@ fn study(deg: f64, n_half: f64, method: SensorMethod, divergence_correction: boo
 /// sensors' span and the filter-free records.
 fn print_profile(
     deg: f64,
+    q: f64,
     t: &[f64],
     records: &[Vec<f64>],
     centres: &[f64],
     t_end: f64,
     reference: &[[f64; 2]],
 ) {
-    let q = 0.5 * 1000.0 * SPEED * SPEED;
     let sin_b = deg.to_radians().sin();
     let cp_ref = |x: f64| {
         let k = reference.partition_point(|p| p[0] < x);
