@@ -57,6 +57,7 @@ fn still_tank(dp: f64) -> Setup {
         shifting: sph::case::DEFAULT_SHIFTING,
         riemann: sph::case::DEFAULT_RIEMANN,
         divergence_correction: sph::case::DEFAULT_DIVERGENCE_CORRECTION,
+        wall_wetness: sph::case::DEFAULT_WALL_WETNESS,
         force: Default::default(),
         sensor_method: Default::default(),
         tank_half_width: 0.15,
@@ -139,11 +140,12 @@ fn hydrostatic_fine() {
 
 /// The same short wedge run on a 1-thread and a 2-thread rayon pool gives bit-identical histories and
 /// particle states, with the default numerics, with the alternatives (particle shifting, delta-SPH,
-/// contour-integrated force) and with the Riemann scheme, shifting, the corrected divergence and the
-/// full pair force in the refined tank.
+/// contour-integrated force), with the Riemann scheme, shifting, the corrected divergence and the
+/// full pair force in the refined tank, and with shifting, the corrected divergence and the wall's
+/// wetness with force-panel sensors.
 #[test]
 fn identical_on_one_and_two_threads() {
-    for variant in 0..3 {
+    for variant in 0..4 {
         identical_on_one_and_two_threads_with(variant);
     }
 }
@@ -169,13 +171,14 @@ fn identical_on_one_and_two_threads_with(variant: u8) {
                     particles_per_half_beam: Some(20.0),
                     shifting: Some(variant > 0),
                     riemann: Some(!alt),
-                    divergence_correction: Some(variant == 2),
+                    divergence_correction: Some(variant >= 2),
+                    wall_wetness: Some(variant == 3),
                     force: Some(match variant {
                         0 => ForceMethod::NormalPairForces,
                         1 => ForceMethod::Contour,
                         _ => ForceMethod::PairForces,
                     }),
-                    sensor_method: Some(if alt {
+                    sensor_method: Some(if alt || variant == 3 {
                         SensorMethod::ForcePanel
                     } else {
                         SensorMethod::Interpolated

@@ -98,6 +98,8 @@ fn study(deg: f64, n_half: f64, method: SensorMethod, divergence_correction: boo
             h_over_dp: std::env::var("CONV_H").ok().map(|v| v.parse().unwrap()),
             // `CONV_SHIFTING=1`: particle shifting with free-surface treatment (uniform tank).
             shifting: std::env::var("CONV_SHIFTING").ok().map(|v| v == "1"),
+            // `CONV_WET=1`: body dummies weighted by the wetness of the body's face (item 29).
+            wall_wetness: std::env::var("CONV_WET").ok().map(|v| v == "1"),
             // `CONV_MIRROR=0`: both sides of the wedge in the tank instead of a symmetry plane.
             mirror: std::env::var("CONV_MIRROR").ok().map(|v| v != "0"),
             // `CONV_UNIFORM=1`: one spacing throughout the tank instead of the refined band.

@@ -580,6 +580,10 @@ pub fn run(
             .overrides
             .shifting
             .unwrap_or(crate::sph::case::DEFAULT_SHIFTING),
+        "wall_wetness": s
+            .overrides
+            .wall_wetness
+            .unwrap_or(crate::sph::case::DEFAULT_WALL_WETNESS),
         "air": s.overrides.air.unwrap_or_default(),
         "sensor_method": s.overrides.sensor_method.unwrap_or(DESIGN_SENSOR_METHOD),
         "convergence_levels": s.study.levels,

@@ -236,6 +236,7 @@ pub fn run(a: AssessArgs) -> Result<()> {
             refinement: a.sph.refinement(),
             divergence_correction: a.sph.divergence_correction(),
             shifting: a.sph.shifting(),
+            wall_wetness: a.sph.wall_wetness(),
             air: Some(a.sph.air),
             sensor_method: a.sensor_method,
             ..Default::default()

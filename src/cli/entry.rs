@@ -179,6 +179,7 @@ fn overrides(n: &Numerics, c: &Common) -> Overrides {
         refinement: n.sph.refinement(),
         divergence_correction: n.sph.divergence_correction(),
         shifting: n.sph.shifting(),
+        wall_wetness: n.sph.wall_wetness(),
         filter_cutoff_hz: c.filter_hz,
         sensor_method: c.sensor_method,
         ..Default::default()
@@ -204,6 +205,7 @@ fn settings(n: Option<&Numerics>, c: &Common) -> serde_json::Value {
         v["refined_tank"] = serde_json::json!(n.sph.refined_tank);
         v["divergence_correction"] = serde_json::json!(n.sph.divergence_correction);
         v["shifting"] = serde_json::json!(n.sph.shifting);
+        v["wall_wetness"] = serde_json::json!(n.sph.wall_wetness);
     }
     v
 }

@@ -87,6 +87,8 @@ struct NumericsFile {
     shifting: Option<bool>,
     riemann: Option<bool>,
     divergence_correction: Option<bool>,
+    /// Body dummies weighted by the wetness of the body's face (`crate::sph::wall_wetness`).
+    wall_wetness: Option<bool>,
     force: Option<ForceMethod>,
     sensor_method: Option<SensorMethod>,
     mirror: Option<bool>,
@@ -355,6 +357,7 @@ pub fn from_source(src: &SourceText) -> Result<Setup> {
         shifting: f.numerics.shifting,
         riemann: f.numerics.riemann,
         divergence_correction: f.numerics.divergence_correction,
+        wall_wetness: f.numerics.wall_wetness,
         force: f.numerics.force,
         sensor_method: f.numerics.sensor_method,
         tank_half_width: opt(&f.tank.half_width_m, "half_width_m")?,
@@ -396,7 +399,7 @@ pub fn from_source(src: &SourceText) -> Result<Setup> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sph::case::{DEFAULT_RIEMANN, DEFAULT_SHIFTING};
+    use crate::sph::case::{DEFAULT_RIEMANN, DEFAULT_SHIFTING, DEFAULT_WALL_WETNESS};
 
     fn parse(text: &str) -> Result<Setup> {
         from_source(&SourceText::from_string("case.toml", text))
@@ -429,12 +432,13 @@ mod tests {
                     [motion]\nkind = \"constant\"\nspeed_m_s = 2.0\n";
         let s = parse(base).unwrap();
         assert!(s.riemann == DEFAULT_RIEMANN && s.shifting == DEFAULT_SHIFTING);
+        assert_eq!(s.wall_wetness, DEFAULT_WALL_WETNESS);
         assert_eq!(s.force, ForceMethod::NormalPairForces);
         let s = parse(&format!(
-            "{base}[numerics]\nriemann = false\nshifting = true\nforce = \"contour\"\n"
+            "{base}[numerics]\nriemann = false\nshifting = true\nforce = \"contour\"\nwall_wetness = true\n"
         ))
         .unwrap();
-        assert!(!s.riemann && s.shifting && s.force == ForceMethod::Contour);
+        assert!(!s.riemann && s.shifting && s.force == ForceMethod::Contour && s.wall_wetness);
         let s = parse(&format!("{base}[numerics]\nforce = \"pair_forces\"\n")).unwrap();
         assert_eq!(s.force, ForceMethod::PairForces);
         let e = parse(&format!("{base}[numerics]\nforce = \"pressure\"\n")).unwrap_err();

@@ -314,6 +314,7 @@ fn stage_setup(
         shifting: Some(main.shifting),
         riemann: Some(main.riemann),
         divergence_correction: Some(main.divergence_correction),
+        wall_wetness: Some(main.wall_wetness),
         force: Some(main.force),
         sensor_method: Some(main.sensor_method),
         mirror: Some(main.mirror),

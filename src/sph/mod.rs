@@ -43,6 +43,7 @@ pub mod study;
 pub mod tank;
 pub mod two_phase_pass;
 pub mod vtu;
+pub mod wall_wetness;
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;

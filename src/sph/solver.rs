@@ -46,6 +46,7 @@ use crate::sph::sensors::{History, SensorSet};
 use crate::sph::shifting::Shifting;
 use crate::sph::tank::Tank;
 use crate::sph::two_phase_pass::{self, Rows};
+use crate::sph::wall_wetness;
 
 mod air_substeps;
 
@@ -344,7 +345,10 @@ impl Simulation {
         let pt = &mut self.pt;
         let air = self.air.as_ref();
         self.counters.time(Stage::Boundary, || {
-            adami2012::update_pressures(grid, pt, kernel, eos, air, vol, g, acc)
+            adami2012::update_pressures(grid, pt, kernel, eos, air, vol, g, acc);
+            if self.setup.wall_wetness {
+                wall_wetness::weight_body_dummies(grid, pt, kernel);
+            }
         });
         let s = &self.setup;
         let lists = &mut self.lists;

@@ -539,6 +539,9 @@ fn numerics_text(st: &serde_json::Value) -> String {
     if on("shifting") {
         parts.push("particle shifting".into());
     }
+    if on("wall_wetness") {
+        parts.push("body dummies weighted by the wetness of the body's face".into());
+    }
     match st["force"].as_str() {
         Some("pair_forces") => {
             parts.push("section force as the sum of the fluid-body pair forces".into())
