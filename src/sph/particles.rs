@@ -51,6 +51,10 @@ pub struct Particles {
     pub level: Vec<u8>,
     /// Whether any particle has a level above 0 (else `level` is all zeros and is not permuted).
     levels: bool,
+    /// With the wall's wetness ([`crate::sph::wall_wetness`]): for a body dummy on the body's face, the
+    /// part of its kernel support outside the body contour; 0 for every other particle. Empty (and not
+    /// permuted) without it.
+    pub face_outside: Vec<f64>,
     scratch: Vec<f64>,
     scratch_kind: Vec<Kind>,
     scratch_level: Vec<u8>,
@@ -178,6 +182,9 @@ impl Particles {
         if self.levels {
             gather(&mut self.level, &mut self.scratch_level, order);
         }
+        if !self.face_outside.is_empty() {
+            gather(&mut self.face_outside, &mut self.scratch, order);
+        }
     }
 
     /// Bytes allocated for the particle storage (state, rates, gradients and sort scratch; capacities
@@ -196,6 +203,7 @@ impl Particles {
             &self.vol,
             &self.p,
             &self.scratch,
+            &self.face_outside,
         ]
         .iter()
         .map(|v| b(v))

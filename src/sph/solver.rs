@@ -186,7 +186,13 @@ impl Simulation {
                 t0 = -clearance / v0;
             }
             let y_min = if mirror { 0.25 * dp } else { f64::NEG_INFINITY };
-            for p in dummy_band::dummy_points(sec, dp, layers, y_min) {
+            let band = dummy_band::dummy_points(sec, dp, layers, y_min);
+            if setup.wall_wetness {
+                pt.face_outside = vec![0.0; pt.len()];
+                pt.face_outside
+                    .extend(wall_wetness::face_outside(sec, &band, dp, &kernel));
+            }
+            for p in band {
                 pt.push(
                     Kind::Body,
                     p[0],
@@ -203,6 +209,9 @@ impl Simulation {
         let air = setup.air.map(|a| a.phase());
         if let Some(layer) = &setup.air {
             fill_air(&mut pt, layer, dp, mirror, setup.g, &outside_body);
+        }
+        if !pt.face_outside.is_empty() {
+            pt.face_outside.resize(pt.len(), 0.0);
         }
         let sensors = SensorSet::new(&setup.sensors, section.as_ref(), dp)?;
         // Wall layers are 2 dp thick each in a refined tank.
