@@ -39,16 +39,18 @@
 //! Until 2026-12-01 (`docs/numerics/wedge-convergence.md`, items 29-31) the face was found from the kernel
 //! sums alone (1 - S_d >= 0.1) and phi was S_f / (1 - S_d). At a V keel that misreads a wetted wall: on
 //! Ochi's 0.093 Lpp section (44.5 deg at the keel) the band's second layer next to the keel has 1 - S_d
-//! of 0.2-0.23, mostly the holes and the inside, so it counted as a face with phi 0.11-0.17 under water,
+//! of 0.11-0.23, mostly the holes and the inside, so it counted as a face with phi 0.11-0.20 under water,
 //! and the first layer read 0.78-0.91; the wall next to the keel was weakened, and water particles
 //! reached it (44 contact corrections at 40 particles, all within 3.3 spacings of the keel). Measured
 //! from the contour the same dummies read 1.
 //!
 //! At the start of a section immersed at rest (a flare event) the water stands off the wall by the
-//! initial lattice's gap (at least dp/2 from the contour), and the face dummies under the water read
-//! 0.3-0.6; on a 30 deg wedge at 20 particles per half-beam they settle to about 0.8 within 0.05 s
-//! (measured with item 30's form of the rule, whose divisor beside a plane wall is the same). A keel
-//! entry has no such start: the wall meets the water as it moves.
+//! initial lattice's gap (at least dp/2 from the contour, more where the lattice is cut along a sloping
+//! wall), and the face dummies under the water read 0.24-0.67 (a 30 deg wedge at 20 and 40 particles per
+//! half-beam). The water closes the gap: moving down at 0.05 m/s, nearly at rest, they read 0.90-1
+//! after 0.02 s at 40 particles and after 0.04 s at 20, and 0.92-1 at both after 0.05 s (gravity: the
+//! free fall of a 2.5 mm gap takes 23 ms); at 0.5 m/s, 0.95-1 after 0.01 s. A flare panel is reached tenths of a second after the start. A keel entry has no
+//! such start: the wall meets the water as it moves.
 //!
 //! Measured against the nonlinear similarity solution of constant-speed wedge entry (items 29-31; refined
 //! tank, force-panel sensors, shifting and the corrected divergence): at 80 particles per half-beam the
@@ -160,7 +162,8 @@ fn face_wetness(grid: &Grid, pt: &Particles, kernel: &WendlandC2) -> Vec<Option<
         .into_par_iter()
         .with_min_len(1024)
         .map(|i| {
-            let o = pt.face_outside[i];
+            // `face_outside` is empty in a run without a section (no body dummies then).
+            let o = pt.face_outside.get(i).copied().unwrap_or(0.0);
             if pt.kind[i] != Kind::Body || o <= 0.0 {
                 return None;
             }
@@ -213,6 +216,50 @@ mod tests {
     use crate::sph::dummy_band::dummy_points;
     use crate::sph::kernel::WendlandC2;
     use crate::sph::particles::Kind;
+
+    /// A run without a body (a tank alone) with the rule on has no face to weigh: it steps, and every
+    /// dummy keeps its lattice volume.
+    #[test]
+    fn a_tank_without_a_body_steps_with_the_rule_on() {
+        let setup = case::Setup {
+            name: "tank".into(),
+            section_points: None,
+            motion: None,
+            rho0: 1000.0,
+            g: 9.81,
+            dp: 0.01,
+            h_over_dp: 1.5,
+            c0: 20.0,
+            eos: crate::sph::eos::EosKind::Linear,
+            delta: 0.1,
+            alpha: 0.02,
+            cfl: 0.2,
+            shifting: false,
+            riemann: case::DEFAULT_RIEMANN,
+            divergence_correction: false,
+            wall_wetness: true,
+            force: Default::default(),
+            sensor_method: Default::default(),
+            tank_half_width: 0.1,
+            tank_depth: 0.1,
+            tank_wall_height: 0.05,
+            damping_zone: 0.0,
+            mirror: true,
+            t_end: 1.0,
+            initial_immersion: 0.0,
+            refinement: None,
+            air: None,
+            sensors: Vec::new(),
+            snapshot_interval: None,
+            filter_cutoff_hz: None,
+            notes: Vec::new(),
+        };
+        let mut sim = Simulation::new(setup).unwrap();
+        for _ in 0..5 {
+            sim.step().unwrap();
+        }
+        assert!((0..sim.pt.len()).all(|i| sim.pt.kind[i] != Kind::Body));
+    }
 
     /// The face part of a first-layer dummy on a plane bottom is the kernel's integral over the half
     /// plane beyond dp/2 (here by Simpson's rule across and along the wall, independent of the
@@ -339,5 +386,56 @@ mod tests {
         );
         assert!(wet.iter().all(|&f| (0.95..=1.0).contains(&f)), "{wet:.3?}");
         assert!(dry.iter().all(|&f| f == 0.0), "{dry:.3?}");
+    }
+
+    /// A section that starts immersed (a flare event of `assess`) starts with a gap: the water keeps
+    /// dp/2 from the contour, and the lattice cut along a sloping wall leaves more in places, so the
+    /// submerged face dummies of a 30 deg wedge at 20 particles per half-beam read phi 0.27-0.59 at the
+    /// first step. Moving down at 0.05 m/s, nearly at rest, the water falls into the gap within a few
+    /// hundredths of a second (the free fall of a 2.5 mm gap takes 23 ms): by 0.05 s every face dummy under
+    /// the water reads at least 0.85 and their median at least 0.9 (measured 0.92 and 0.956; at 0.5 m/s the
+    /// motion closes the gap in 10 ms). A flare panel's impact comes tenths of a second later.
+    #[test]
+    fn the_face_of_a_section_immersed_at_the_start_is_wetted_within_hundredths_of_a_second() {
+        let section = Section::wedge(30f64.to_radians(), 0.1, 0.1).unwrap();
+        let setup = case::resolve(
+            "immersed",
+            &section,
+            &MotionSpec::Constant { speed_m_s: 0.05 },
+            vec![],
+            &Overrides {
+                particles_per_half_beam: Some(20.0),
+                wall_wetness: Some(true),
+                shifting: Some(true),
+                divergence_correction: Some(true),
+                initial_immersion: Some(0.04),
+                ..Default::default()
+            },
+        )
+        .unwrap();
+        let mut sim = Simulation::new(setup).unwrap();
+        let support = sim.kernel.support();
+        let submerged_face = |sim: &Simulation| {
+            let mut phi: Vec<f64> = (0..sim.pt.len())
+                .filter(|&i| {
+                    sim.pt.kind[i] == Kind::Body
+                        && sim.pt.face_outside[i] > 0.0
+                        && sim.pt.z[i] < -support
+                })
+                .map(|i| sim.pt.vol[i] / sim.dummy_vol)
+                .collect();
+            phi.sort_by(f64::total_cmp);
+            phi
+        };
+        sim.step().unwrap();
+        while sim.time < 0.05 {
+            sim.step().unwrap();
+        }
+        let settled = submerged_face(&sim);
+        assert!(settled.len() >= 8, "{settled:.3?}");
+        assert!(
+            settled[0] >= 0.85 && settled[settled.len() / 2] >= 0.9,
+            "{settled:.3?}"
+        );
     }
 }
