@@ -11,7 +11,7 @@ use slamtool::analytic::{von_karman, wagner};
 use slamtool::loads::peaks::summarise;
 use slamtool::sph::{
     self, MotionSpec, Overrides, RunOptions, SensorMethod, SensorSpec, Setup, Simulation,
-    body::Section, case::ForceMethod, eos::EosKind,
+    body::Section, case::ForceMethod, eos::EosKind, particles::Kind,
 };
 
 // ------------------------------------------------------------------------------------------------
@@ -124,6 +124,26 @@ fn check_hydrostatic(dp: f64, tol: f64) {
 ///
 /// Both assert the 1 % and no drift (change below 0.5 % between the two windows). What is left
 /// of the bias scales with the compressibility rho g D / (rho0 c0^2) (0.5 % here): +0.4 % at c0 = 40 m/s.
+/// A tank without a body, with the wall-wetness rule on (`sph::wall_wetness`), has no face to weigh:
+/// it steps, and every dummy of the tank keeps its lattice volume.
+#[test]
+fn a_tank_without_a_body_steps_with_the_wall_wetness_rule_on() {
+    let mut sim = Simulation::new(Setup {
+        wall_wetness: true,
+        ..still_tank(0.01)
+    })
+    .unwrap();
+    for _ in 0..5 {
+        sim.step().unwrap();
+    }
+    let dummies: Vec<usize> = (0..sim.pt.len())
+        .filter(|&i| !sim.pt.kind[i].is_fluid())
+        .collect();
+    assert!(!dummies.is_empty());
+    assert!(dummies.iter().all(|&i| sim.pt.kind[i] != Kind::Body));
+    assert!(dummies.iter().all(|&i| sim.pt.vol[i] == sim.dummy_vol));
+}
+
 #[test]
 fn hydrostatic_coarse() {
     check_hydrostatic(0.01, 0.01);

@@ -218,50 +218,6 @@ mod tests {
     use crate::sph::kernel::WendlandC2;
     use crate::sph::particles::Kind;
 
-    /// A run without a body (a tank alone) with the rule on has no face to weigh: it steps, and every
-    /// dummy keeps its lattice volume.
-    #[test]
-    fn a_tank_without_a_body_steps_with_the_rule_on() {
-        let setup = case::Setup {
-            name: "tank".into(),
-            section_points: None,
-            motion: None,
-            rho0: 1000.0,
-            g: 9.81,
-            dp: 0.01,
-            h_over_dp: 1.5,
-            c0: 20.0,
-            eos: crate::sph::eos::EosKind::Linear,
-            delta: 0.1,
-            alpha: 0.02,
-            cfl: 0.2,
-            shifting: false,
-            riemann: case::DEFAULT_RIEMANN,
-            divergence_correction: false,
-            wall_wetness: true,
-            force: Default::default(),
-            sensor_method: Default::default(),
-            tank_half_width: 0.1,
-            tank_depth: 0.1,
-            tank_wall_height: 0.05,
-            damping_zone: 0.0,
-            mirror: true,
-            t_end: 1.0,
-            initial_immersion: 0.0,
-            refinement: None,
-            air: None,
-            sensors: Vec::new(),
-            snapshot_interval: None,
-            filter_cutoff_hz: None,
-            notes: Vec::new(),
-        };
-        let mut sim = Simulation::new(setup).unwrap();
-        for _ in 0..5 {
-            sim.step().unwrap();
-        }
-        assert!((0..sim.pt.len()).all(|i| sim.pt.kind[i] != Kind::Body));
-    }
-
     /// The face part of a first-layer dummy on a plane bottom is the kernel's integral over the half
     /// plane beyond dp/2 (here by Simpson's rule across and along the wall, independent of the
     /// quadrature under test, within 0.2 %); deeper dummies have none; on a 20 deg V keel the quadrature
@@ -332,6 +288,27 @@ mod tests {
         assert!(worst < 0.005, "{worst}");
     }
 
+    /// A 30 deg wedge (0.1 m half-beam) at `speed` m/s, 20 particles per half-beam, with the rule,
+    /// shifting and the corrected divergence; its keel `immersion` m deep at the start, or at the surface.
+    fn wedge30_with_the_rule(speed: f64, immersion: Option<f64>) -> case::Setup {
+        let section = Section::wedge(30f64.to_radians(), 0.1, 0.1).unwrap();
+        case::resolve(
+            "wetness",
+            &section,
+            &MotionSpec::Constant { speed_m_s: speed },
+            vec![],
+            &Overrides {
+                particles_per_half_beam: Some(20.0),
+                wall_wetness: Some(true),
+                shifting: Some(true),
+                divergence_correction: Some(true),
+                initial_immersion: immersion,
+                ..Default::default()
+            },
+        )
+        .unwrap()
+    }
+
     /// A 30 deg wedge entering at 5 m/s (20 particles per half-beam, shifting and the corrected
     /// divergence), 7 spacings deep: the body dummies of the first two layers under the wetted wall (more
     /// than a kernel support below the still-water line, water within 2.2 dp) count with their full
@@ -340,21 +317,7 @@ mod tests {
     /// `docs/numerics/wedge-convergence.md`).
     #[test]
     fn the_wetted_wall_counts_in_its_first_layers_and_the_dry_wall_not_at_all() {
-        let section = Section::wedge(30f64.to_radians(), 0.1, 0.1).unwrap();
-        let setup = case::resolve(
-            "wetness",
-            &section,
-            &MotionSpec::Constant { speed_m_s: 5.0 },
-            vec![],
-            &Overrides {
-                particles_per_half_beam: Some(20.0),
-                wall_wetness: Some(true),
-                shifting: Some(true),
-                divergence_correction: Some(true),
-                ..Default::default()
-            },
-        )
-        .unwrap();
+        let setup = wedge30_with_the_rule(5.0, None);
         let dp = setup.dp;
         let mut sim = Simulation::new(setup).unwrap();
         while sim.body.z_keel > -7.0 * dp {
@@ -398,23 +361,7 @@ mod tests {
     /// motion closes the gap in 10 ms). A flare panel's impact comes tenths of a second later.
     #[test]
     fn the_face_of_a_section_immersed_at_the_start_is_wetted_within_hundredths_of_a_second() {
-        let section = Section::wedge(30f64.to_radians(), 0.1, 0.1).unwrap();
-        let setup = case::resolve(
-            "immersed",
-            &section,
-            &MotionSpec::Constant { speed_m_s: 0.05 },
-            vec![],
-            &Overrides {
-                particles_per_half_beam: Some(20.0),
-                wall_wetness: Some(true),
-                shifting: Some(true),
-                divergence_correction: Some(true),
-                initial_immersion: Some(0.04),
-                ..Default::default()
-            },
-        )
-        .unwrap();
-        let mut sim = Simulation::new(setup).unwrap();
+        let mut sim = Simulation::new(wedge30_with_the_rule(0.05, Some(0.04))).unwrap();
         let support = sim.kernel.support();
         let submerged_face = |sim: &Simulation| {
             let mut phi: Vec<f64> = (0..sim.pt.len())
