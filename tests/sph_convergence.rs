@@ -86,6 +86,24 @@ fn every_peak_gets_a_statement_from_a_coarser_companion() {
         conv.peaks[0].values[0],
         force.slamming_peak.expect("a force peak").value
     );
+    // The filtered peaks compared are the filtered records' slamming peaks, in the same impact window as
+    // the raw ones (not the whole filtered records' maxima), and their statements match events as the
+    // raw ones do.
+    let records = std::iter::once(&r.summary.force).chain(&r.summary.sensors);
+    for (k, q) in records.enumerate() {
+        let raw = q.anatomy.as_ref().expect("an anatomy");
+        let f = q.filtered_anatomy.as_ref().expect("a filtered anatomy");
+        assert_eq!(f.window, raw.window, "{}", q.name);
+        let filtered = &conv.peaks[2 * k + 1];
+        assert!(filtered.name.contains("filtered"), "{}", filtered.name);
+        match (f.slamming_peak, f.window) {
+            (Some(p), Some(w)) => {
+                assert_eq!(filtered.values[0], p.value, "{}", filtered.statement);
+                assert!(p.time >= w.start_s && p.time <= w.end_s, "{}", q.name);
+            }
+            _ => assert_eq!(filtered.values[0], 0.0, "{}", filtered.statement),
+        }
+    }
     // Machine-readable outputs: a CSV row per peak, and the statements inside summary.json.
     let csv = std::fs::read_to_string(dir.path().join("convergence.csv")).unwrap();
     assert_eq!(

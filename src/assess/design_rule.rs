@@ -3,7 +3,15 @@
 //!
 //! The SPH value considered is the **slamming peak** of the record, the largest value in its impact
 //! window ([`crate::loads::anatomy`]), never a value of the contact transient, of the immersion after the
-//! impact or of the record's end. With P that peak, U = GCI P its discretisation uncertainty (Roache's
+//! impact or of the record's end. Where the run has a physical low-pass cut-off
+//! ([`crate::loads::cutoff`]: f_c = 2 / tau_min, tau_min the quickest analytic crossing of a panel, which
+//! keeps at least 90 % of a pulse rising that fast), the record is the low-passed one and its
+//! convergence statement that of the filtered slamming peaks at every level; the raw slamming peak is
+//! reported beside it. Content faster than the quickest physical rise is the acoustic and particle noise
+//! of weakly compressible SPH: its amplitude is set by the artificial sound speed and the particle
+//! disorder, it does not converge with the spacing, and a single burst of it in one level's record would
+//! otherwise decide P, its GCI and the verdict (the thirty-fourth session's sensor S133-2 at 0.133 Lpp:
+//! 7119 Pa raw at the finest of three levels against 5654 Pa filtered). With P that peak, U = GCI P its discretisation uncertainty (Roache's
 //! Grid Convergence Index of the matched peaks at two or three spacings, [`crate::loads::convergence`])
 //! and A the analytic estimate of the same sensor and event (modified Logvinovich mean panel pressure,
 //! or section force, each corrected to the similarity solution of the equivalent wedge):

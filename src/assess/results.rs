@@ -26,8 +26,8 @@ pub struct SphSensor {
     pub filtered_peak_pa: Option<f64>,
     pub peak_time_s: f64,
     pub impulse_pa_s: f64,
-    /// Convergence verdict of the raw peak (converged, acceptable, not_converged, not_assessed,
-    /// not_wetted) and its statement.
+    /// Convergence verdict of the slamming peak (filtered where `slamming_filtered`: converged,
+    /// acceptable, not_converged, mismatched, ...) and its statement.
     pub convergence: Option<String>,
     pub convergence_statement: Option<String>,
     /// Whether the SPH water reached the sensor with a slamming pressure: its raw peak is at least
@@ -52,6 +52,17 @@ pub struct SphSensor {
     pub slamming_peak_time_s: Option<f64>,
     #[serde(default)]
     pub slamming_impulse_pa_s: Option<f64>,
+    /// Whether the slamming peak, its window status, time, rise, hydrostatic part, GCI, spread and
+    /// verdict are those of the low-passed record (the run's physical cut-off, `filter_cutoff_hz`), the
+    /// design quantity wherever the run has a cut-off ([`super::design_rule`]); false: the raw record's.
+    #[serde(default)]
+    pub slamming_filtered: bool,
+    /// The raw record's slamming peak (the largest unfiltered value in the impact window) and its
+    /// convergence verdict, reported beside the filtered design quantity.
+    #[serde(default)]
+    pub raw_slamming_peak_pa: Option<f64>,
+    #[serde(default)]
+    pub raw_convergence: Option<String>,
     /// The slamming peak is the window's last sample and the record still rises after it: no distinct
     /// impact peak, the value where the window closes ([`crate::loads::anatomy::Anatomy::at_window_end`]).
     #[serde(default)]
@@ -154,7 +165,10 @@ pub fn sensor_warnings(r: &SphRecord, analytic: Option<&Estimate>) -> Vec<String
             // What was compared with the threshold: the slamming peak in the sensor's impact window when
             // the record has one (the run's largest value may come later, with the water that reached
             // the sensor after the window), else the run's largest value.
-            let reached = match (q.slamming_peak_pa, q.impact_window_s) {
+            let reached = match (
+                q.raw_slamming_peak_pa.or(q.slamming_peak_pa),
+                q.impact_window_s,
+            ) {
                 (Some(p), Some([t0, t1])) => {
                     let later = if q.raw_peak_pa > p {
                         format!(
@@ -292,6 +306,12 @@ pub struct SphRecord {
     pub force_spread: Option<f64>,
     #[serde(default)]
     pub force_convergence_statement: Option<String>,
+    /// Whether the force's slamming peak and convergence are those of the low-passed record (as
+    /// [`SphSensor::slamming_filtered`]), and the raw record's slamming peak beside it.
+    #[serde(default)]
+    pub force_slamming_filtered: bool,
+    #[serde(default)]
+    pub force_raw_slamming_peak_n_per_m: Option<f64>,
     pub sensors: Vec<SphSensor>,
     pub stopped_early: Option<String>,
     pub warnings: Vec<String>,
@@ -673,6 +693,9 @@ pub fn pressures_csv(a: &Assessment, sensors_of: &dyn Fn(f64) -> Vec<String>) ->
         "sph_impact",
         "sph_slamming_peak_pa",
         "sph_slamming_peak_time_s",
+        "sph_slamming_basis",
+        "sph_raw_slamming_peak_pa",
+        "sph_raw_convergence",
         "sph_hydrostatic_at_peak_pa",
         "sph_gci",
         "particles_across_wetted_half_width",
@@ -734,6 +757,18 @@ pub fn pressures_csv(a: &Assessment, sensors_of: &dyn Fn(f64) -> Vec<String>) ->
                     .unwrap_or_default(),
                 num(s.and_then(|q| q.slamming_peak_pa)),
                 num(s.and_then(|q| q.slamming_peak_time_s)),
+                s.filter(|q| q.slamming_peak_pa.is_some())
+                    .map_or("", |q| {
+                        if q.slamming_filtered {
+                            "filtered"
+                        } else {
+                            "raw"
+                        }
+                    })
+                    .to_string(),
+                num(s.and_then(|q| q.raw_slamming_peak_pa)),
+                s.and_then(|q| q.raw_convergence.clone())
+                    .unwrap_or_default(),
                 num(s.and_then(|q| q.hydrostatic_pa)),
                 num(s.and_then(|q| q.gci)),
                 num(s.and_then(|q| q.particles_across_wetted)),
@@ -856,6 +891,9 @@ mod tests {
             slamming_peak_pa: Some(peak),
             slamming_peak_time_s: Some(0.05),
             slamming_impulse_pa_s: Some(1.0),
+            slamming_filtered: false,
+            raw_slamming_peak_pa: Some(peak),
+            raw_convergence: None,
             rising_at_window_end: false,
             rise_time_s: Some(0.01),
             hydrostatic_pa: Some(10.0),
@@ -903,6 +941,8 @@ mod tests {
             force_gci: None,
             force_spread: None,
             force_convergence_statement: None,
+            force_slamming_filtered: false,
+            force_raw_slamming_peak_n_per_m: Some(250.0),
             sensors: vec![
                 sph_sensor("K1", 2780.0, true, false),
                 sph_sensor("K2", 1120.0, true, true),

@@ -519,6 +519,7 @@ fn go(mut setup: sph::Setup, run: Run, name: &str) -> slamtool::Result<()> {
             ff.time * 1e3
         );
     }
+    print_slamming_peaks(&summary.force, 1.0, "N/m");
     println!(
         "peak pressure   {:.1} kPa at {:.3} ms, {:.1} mm from the keel along the contour",
         summary.peak_contour_pressure_pa * 1e-3,
@@ -542,6 +543,7 @@ fn go(mut setup: sph::Setup, run: Run, name: &str) -> slamtool::Result<()> {
                 s.summary.raw.value * 1e-3,
                 s.summary.raw.time * 1e3
             );
+            print_slamming_peaks(s, 1e-3, "kPa");
         } else {
             println!("  sensor {:8} not wetted during the run", s.name);
         }
@@ -643,5 +645,29 @@ fn print_contact_transient(summary: &sph::RunSummary) {
             .summary
             .contact_transient
             .map_or(0.0, |p| p.value)
+    );
+}
+
+/// The slamming peaks of a section run's record, raw and low-passed, in its impact window
+/// ([`slamtool::loads::anatomy`]): the filtered one is the design quantity of an assessment.
+fn print_slamming_peaks(s: &slamtool::sph::NamedSummary, scale: f64, unit: &str) {
+    let peak_of =
+        |a: &Option<slamtool::loads::anatomy::Anatomy>| a.as_ref().and_then(|a| a.slamming_peak);
+    let Some(raw) = peak_of(&s.anatomy) else {
+        return;
+    };
+    let filtered = match (peak_of(&s.filtered_anatomy), &s.summary.filter) {
+        (Some(f), Some(lp)) => format!(
+            "; filtered {:.1} {unit} at {:.3} ms ({:.0} Hz)",
+            f.value * scale,
+            f.time * 1e3,
+            lp.cutoff_hz
+        ),
+        _ => String::new(),
+    };
+    println!(
+        "    slamming peak in the impact window: raw {:.1} {unit} at {:.3} ms{filtered}",
+        raw.value * scale,
+        raw.time * 1e3
     );
 }

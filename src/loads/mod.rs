@@ -8,4 +8,4 @@ pub mod cutoff;
 pub mod peaks;
 
 pub use butterworth::{LowPass, resample_uniform};
-pub use peaks::{Peak, peak, summarise};
+pub use peaks::{Peak, filtered_record, peak, summarise};

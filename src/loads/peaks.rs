@@ -109,12 +109,18 @@ pub fn summarise_after(
     s.at_record_end = k.is_some_and(|k| k0 + k + 1 == t.len().min(x.len())) && k != Some(0);
     s.raw = raw;
     if let (Some(f), Some(lp)) = (&mut s.filtered, &s.filter) {
-        let dt = 1.0 / lp.sample_hz;
-        let (tu, xu) = resample_uniform(t, x, dt);
-        let y = lp.filtfilt(&xu);
+        let (tu, y) = filtered_record(t, x, lp);
         *f = peak_from(&tu, &y, transient_end).0;
     }
     Ok(s)
+}
+
+/// The record (`t`, `x`) low-passed by `lp`: resampled uniformly at `lp`'s sampling rate, then filtered
+/// forward and back (zero phase), as [`summarise`] filters it.
+pub fn filtered_record(t: &[f64], x: &[f64], lp: &LowPass) -> (Vec<f64>, Vec<f64>) {
+    let (tu, xu) = resample_uniform(t, x, 1.0 / lp.sample_hz);
+    let y = lp.filtfilt(&xu);
+    (tu, y)
 }
 
 /// Summarise a history: raw peak, and the filtered one when a cut-off is given. The record is resampled

@@ -94,6 +94,11 @@ pub struct NamedSummary {
     /// The record's phases and its slamming peak ([`crate::loads::anatomy`]), for a section run.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub anatomy: Option<crate::loads::anatomy::Anatomy>,
+    /// The anatomy of the low-passed record (the run's physical cut-off, `summary.filter`), against the
+    /// same impact window: its slamming peak is the filtered slamming peak, the design quantity of an
+    /// assessment ([`crate::assess::design_rule`]). `None` when the run has no cut-off or no anatomy.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub filtered_anatomy: Option<crate::loads::anatomy::Anatomy>,
     /// The keel stage whose record this is, when one resolved the sensor ([`keel_stage`]).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub stage: Option<keel_stage::StageRef>,
@@ -310,30 +315,44 @@ fn summarise_run(sim: &Simulation, wall_s: f64, stopped: Option<String>) -> Resu
     let t_tr = phases
         .as_ref()
         .map_or_else(|| contact_transient_end(h, s.dp), |p| p.transient_end_s);
-    let force = NamedSummary {
+    let mut force = NamedSummary {
         name: "section force".into(),
         unit: "N/m".into(),
         width_m: None,
         integration_span_m: None,
         summary: summarise_after(&h.t, &h.fz, fc, t_tr)?,
         anatomy: phases.as_ref().map(|p| p.force()),
+        filtered_anatomy: None,
         stage: None,
         main_run_later_load: None,
     };
+    if let (Some(p), Some(lp)) = (&phases, &force.summary.filter) {
+        let (tu, y) = crate::loads::filtered_record(&h.t, &h.fz, lp);
+        force.filtered_anatomy = Some(p.force_record(&tu, &y));
+    }
     let mut sensors = Vec::new();
     let spans = sim.sensors().spans();
     for (k, (name, col)) in h.sensor_names.iter().zip(&h.sensors).enumerate() {
         let span = spans.get(k).copied();
+        let summary = summarise_after(&h.t, col, fc, t_tr)?;
+        let filtered_anatomy = match (&phases, span, &summary.filter) {
+            (Some(p), Some(span), Some(lp)) => {
+                let (tu, y) = crate::loads::filtered_record(&h.t, col, lp);
+                Some(p.sensor_record(span, &tu, &y))
+            }
+            _ => None,
+        };
         sensors.push(NamedSummary {
             name: name.clone(),
             unit: "Pa".into(),
             width_m: s.sensors.get(k).map(|x| x.width_m),
             integration_span_m: span,
-            summary: summarise_after(&h.t, col, fc, t_tr)?,
+            summary,
             anatomy: phases
                 .as_ref()
                 .zip(span)
                 .map(|(p, span)| p.sensor(span, col)),
+            filtered_anatomy,
             stage: None,
             main_run_later_load: None,
         });

@@ -212,14 +212,28 @@ impl<'a> RunPhases<'a> {
 
     /// The anatomy of the sensor record `x` integrated over `span`.
     pub fn sensor(&self, span: [f64; 2], x: &[f64]) -> Anatomy {
+        self.sensor_record(span, &self.history.t, x)
+    }
+
+    /// The anatomy of a record (`t`, `x`) of the sensor integrated over `span`: the run's own record, or
+    /// its low-passed resampling ([`crate::loads::filtered_record`]), measured against the same impact
+    /// window.
+    pub fn sensor_record(&self, span: [f64; 2], t: &[f64], x: &[f64]) -> Anatomy {
         let e = self.sensor_expectation(span);
         let z_s = point_at_arc(self.section, 0.5 * (span[0] + span[1])).map_or(0.0, |p| p[1]);
         let hydro = |t: f64| self.rho * G * (self.keel_depth(t) - z_s).max(0.0);
-        anatomy(&self.history.t, x, &e, &hydro)
+        anatomy(t, x, &e, &hydro)
     }
 
     /// The anatomy of the section force record.
     pub fn force(&self) -> Anatomy {
+        let h = self.history;
+        self.force_record(&h.t, &h.fz)
+    }
+
+    /// The anatomy of a section force record (`t`, `fz`): the run's own, or its low-passed resampling,
+    /// measured against the same window.
+    pub fn force_record(&self, t: &[f64], fz: &[f64]) -> Anatomy {
         let h = self.history;
         let t_last = h.t.last().copied().unwrap_or(0.0);
         let t_full = match &self.wagner {
@@ -246,7 +260,7 @@ impl<'a> RunPhases<'a> {
         };
         let hull_section = crate::hull::Section::new(self.section.half_points().to_vec());
         let hydro = |t: f64| self.rho * G * hull_section.properties(self.keel_depth(t)).area;
-        anatomy(&h.t, &h.fz, &e, &hydro)
+        anatomy(t, fz, &e, &hydro)
     }
 }
 

@@ -83,7 +83,8 @@ pub struct ReportedPeak {
 }
 
 /// The peaks a summary reports: force and contour peak pressure, and every sensor, raw and (when a
-/// filter was applied) filtered, all after the contact transient.
+/// filter was applied) filtered, all after the contact transient; for a section run's records, the
+/// slamming peaks of their impact windows, raw and filtered.
 pub fn reported_peaks(s: &RunSummary) -> Vec<ReportedPeak> {
     let mut out = Vec::new();
     let mut add = |name: &str, unit: &str, ns: &crate::sph::NamedSummary| {
@@ -103,13 +104,19 @@ pub fn reported_peaks(s: &RunSummary) -> Vec<ReportedPeak> {
             anatomy: ns.anatomy.clone(),
         });
         if let (Some(f), Some(lp)) = (&sm.filtered, &sm.filter) {
+            // the filtered slamming peak where the record has its anatomy: the same impact window as
+            // the raw one, so that the levels compare the same event, not the whole records' maxima
+            let value = match &ns.filtered_anatomy {
+                Some(a) => a.slamming_peak.map_or(0.0, |p| p.value),
+                None => f.value,
+            };
             out.push(ReportedPeak {
                 name: format!("{name} filtered {:.0} Hz", lp.cutoff_hz),
                 unit: unit.to_string(),
-                value: f.value,
-                transient_tail: tail,
-                at_end,
-                anatomy: None,
+                value,
+                transient_tail: tail && ns.filtered_anatomy.is_none(),
+                at_end: at_end && ns.filtered_anatomy.is_none(),
+                anatomy: ns.filtered_anatomy.clone(),
             });
         }
     };

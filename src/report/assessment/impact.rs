@@ -289,13 +289,23 @@ pub fn section(r: &mut Report, saved: &Saved) {
                     .push(Series::new(format!("{n} filtered"), pts, k, Mark::Line));
             }
         }
-        // each sensor's slamming peak (the largest value in its impact window), where SPH has one
+        // each sensor's slamming peak (the largest value in its impact window), where SPH has one: the
+        // filtered record's where the run has a cut-off (the design quantity), else the raw record's
         let mut marked = 0;
+        let mut on_filtered = false;
         for (k, n) in sensors.iter().enumerate() {
             let peak = list(&run.summary, "sensors")
                 .iter()
                 .find(|q| text(q, "name") == n.as_str())
-                .map(|q| &q["anatomy"]["slamming_peak"])
+                .map(|q| {
+                    let f = &q["filtered_anatomy"]["slamming_peak"];
+                    on_filtered |= !f.is_null();
+                    if f.is_null() {
+                        &q["anatomy"]["slamming_peak"]
+                    } else {
+                        f
+                    }
+                })
                 .and_then(|p| Some((num(p, "time_s")? * 1e3, num(p, "value")? * 1e-3)));
             if let Some(pt) = peak {
                 fig.series.push(Series::new(
@@ -307,11 +317,18 @@ pub fn section(r: &mut Report, saved: &Saved) {
                 marked += 1;
             }
         }
-        let dots = if marked > 0 {
-            " Dots: each sensor's slamming peak, the largest raw value in its impact window (the analytic \
-             contact crossing it); a sensor without a dot has no SPH impact (see the sign-off page)."
-        } else {
-            ""
+        let dots = match (marked > 0, on_filtered) {
+            (true, true) => {
+                " Dots: each sensor's slamming peak, the largest value of its filtered record in its impact \
+                 window (the analytic contact crossing it), the design quantity; a sensor without a dot has \
+                 no SPH impact (see the sign-off page)."
+            }
+            (true, false) => {
+                " Dots: each sensor's slamming peak, the largest raw value in its impact window (the \
+                 analytic contact crossing it); a sensor without a dot has no SPH impact (see the sign-off \
+                 page)."
+            }
+            _ => "",
         };
         let staged: Vec<String> = list(&run.summary, "stages")
             .iter()

@@ -277,7 +277,12 @@ pub fn page(r: &mut Report, saved: &Saved) {
     r.para(&format!(
         "Design rule: {}. The SPH value is the slamming peak of the sensor's impact window (the analytic \
          wetted contact crossing the sensor, widened by half its time and by one particle spacing), never a value of the \
-         contact transient or of the end of a run. Where the record still rises as the window closes \
+         contact transient or of the end of a run, read from the record low-passed at the event's physical \
+         cut-off where the run has one (zero-phase 2nd-order Butterworth at 2 / tau, tau the quickest \
+         analytic crossing of a panel: it keeps at least 90 % of a pulse rising that fast; faster content is \
+         the acoustic and particle noise of weakly compressible SPH, which does not converge with the \
+         spacing), its convergence verdict that of the filtered peaks; the raw slamming peak and its \
+         verdict are in pressures.csv beside it. Where the record still rises as the window closes \
          there is no distinct impact peak: the value is the window's last sample, flagged, and the design \
          value is the larger of it (with U) and the analytic one. U is its discretisation uncertainty: \
          the GCI of the matched peaks at the convergence levels (SPH = smoothed-particle hydrodynamics; GCI = Roache's grid \
