@@ -202,6 +202,28 @@ fn forcing_flag(s: &Value) -> Option<String> {
 
 /// The impact window of the SPH run and the analytic peak time of design entry `d` of station `f`,
 /// from the governing event (the one whose speed and wave the entry names).
+/// The raw slamming peak (kPa, two decimals) of the governing event's SPH record of panel `d`, where the
+/// design quantity is the filtered record's; "-" otherwise.
+fn governing_raw(saved: &Saved, f: f64, d: &Value) -> String {
+    let name = text(d, "name");
+    saved
+        .events()
+        .iter()
+        .find(|e| {
+            at(e, f)
+                && num(e, "speed_m_per_s") == num(d, "speed_m_per_s")
+                && text(e, "wave") == text(d, "wave")
+        })
+        .and_then(|e| {
+            list(&e["sph"], "sensors")
+                .iter()
+                .find(|x| text(x, "name") == name && x["slamming_filtered"].as_bool() == Some(true))
+                .and_then(|x| num(x, "raw_slamming_peak_pa"))
+        })
+        .filter(|_| num(d, "sph").is_some())
+        .map_or_else(|| "-".into(), |p| format!("{:.2}", p / 1e3))
+}
+
 fn governing_timing(saved: &Saved, f: f64, d: &Value) -> (String, Option<f64>) {
     let name = text(d, "name");
     let event = saved.events().iter().find(|e| {
@@ -346,6 +368,7 @@ pub fn page(r: &mut Report, saved: &Saved) {
                     (Some(p), None) => format!("{:.2}", p / 1e3),
                     _ => "-".into(),
                 },
+                governing_raw(saved, f, d),
                 fmt(num(d, "analytic"), 1e-3, 2),
                 fmt(num(d, "hydrostatic"), 1e-3, 2),
                 text(d, "source").to_string(),
@@ -383,12 +406,17 @@ pub fn page(r: &mut Report, saved: &Saved) {
         }
     }
     r.push(Block::Table {
-        caption: "Design slamming pressure per panel (kPa) with the governing event".into(),
+        caption:
+            "Design slamming pressure per panel (kPa) with the governing event; SPH ± U is the \
+                  slamming peak of the low-passed record where the run has a cut-off, SPH raw the \
+                  unfiltered record's, beside it"
+                .into(),
         header: [
             "station",
             "panel",
             "design",
             "SPH ± U",
+            "SPH raw",
             "analytic",
             "hydrostatic",
             "source",
