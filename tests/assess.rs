@@ -231,6 +231,15 @@ fn screen_runs_sph_for_one_event_per_station() {
                 let (t, w) = (q.slamming_peak_time_s.unwrap(), q.impact_window_s.unwrap());
                 assert!(t >= w[0] && t <= w[1], "{q:?}");
                 assert!(d.value.unwrap() >= q.slamming_peak_pa.unwrap(), "{d:?}");
+                // where the run has a cut-off, the slamming peak and its verdict are the low-passed
+                // record's, with the raw record's beside them
+                let sph = e.sph.as_ref().unwrap();
+                assert_eq!(q.slamming_filtered, sph.filter_cutoff_hz.is_some(), "{q:?}");
+                if q.slamming_filtered {
+                    let st = q.convergence_statement.as_deref().unwrap_or_default();
+                    assert!(st.contains(" filtered "), "{st}");
+                    assert!(q.raw_slamming_peak_pa.is_some(), "{q:?}");
+                }
             }
         }
     }
