@@ -317,18 +317,21 @@ pub fn section(r: &mut Report, saved: &Saved) {
                 marked += 1;
             }
         }
-        let dots = match (marked > 0, on_filtered) {
-            (true, true) => {
-                " Dots: each sensor's slamming peak, the largest value of its filtered record in its impact \
-                 window (the analytic contact crossing it), the design quantity; a sensor without a dot has \
-                 no SPH impact (see the sign-off page)."
-            }
-            (true, false) => {
-                " Dots: each sensor's slamming peak, the largest raw value in its impact window (the \
-                 analytic contact crossing it); a sensor without a dot has no SPH impact (see the sign-off \
-                 page)."
-            }
-            _ => "",
+        let dots = if marked > 0 {
+            let (read, design) = if on_filtered {
+                (
+                    "the largest value of its filtered record",
+                    ", the design quantity",
+                )
+            } else {
+                ("the largest raw value", "")
+            };
+            format!(
+                " Dots: each sensor's slamming peak, {read} in its impact window (the analytic contact \
+                 crossing it){design}; a sensor without a dot has no SPH impact (see the sign-off page)."
+            )
+        } else {
+            String::new()
         };
         let staged: Vec<String> = list(&run.summary, "stages")
             .iter()
@@ -348,7 +351,7 @@ pub fn section(r: &mut Report, saved: &Saved) {
             })
             .collect();
         let dots = if staged.is_empty() {
-            dots.to_string()
+            dots
         } else {
             format!(
                 "{dots} Records of sensors the main run crossed too early to resolve: {}.",

@@ -200,20 +200,20 @@ fn forcing_flag(s: &Value) -> Option<String> {
     ))
 }
 
-/// The impact window of the SPH run and the analytic peak time of design entry `d` of station `f`,
-/// from the governing event (the one whose speed and wave the entry names).
+/// The governing event of design entry `d` of station `f`: the one whose speed and wave the entry names.
+fn governing_event<'a>(saved: &'a Saved, f: f64, d: &Value) -> Option<&'a Value> {
+    saved.events().iter().find(|e| {
+        at(e, f)
+            && num(e, "speed_m_per_s") == num(d, "speed_m_per_s")
+            && text(e, "wave") == text(d, "wave")
+    })
+}
+
 /// The raw slamming peak (kPa, two decimals) of the governing event's SPH record of panel `d`, where the
 /// design quantity is the filtered record's; "-" otherwise.
 fn governing_raw(saved: &Saved, f: f64, d: &Value) -> String {
     let name = text(d, "name");
-    saved
-        .events()
-        .iter()
-        .find(|e| {
-            at(e, f)
-                && num(e, "speed_m_per_s") == num(d, "speed_m_per_s")
-                && text(e, "wave") == text(d, "wave")
-        })
+    governing_event(saved, f, d)
         .and_then(|e| {
             list(&e["sph"], "sensors")
                 .iter()
@@ -224,14 +224,11 @@ fn governing_raw(saved: &Saved, f: f64, d: &Value) -> String {
         .map_or_else(|| "-".into(), |p| format!("{:.2}", p / 1e3))
 }
 
+/// The impact window of the SPH run and the analytic peak time of design entry `d` of station `f`,
+/// from the governing event ([`governing_event`]).
 fn governing_timing(saved: &Saved, f: f64, d: &Value) -> (String, Option<f64>) {
     let name = text(d, "name");
-    let event = saved.events().iter().find(|e| {
-        at(e, f)
-            && num(e, "speed_m_per_s") == num(d, "speed_m_per_s")
-            && text(e, "wave") == text(d, "wave")
-    });
-    let Some(e) = event else {
+    let Some(e) = governing_event(saved, f, d) else {
         return ("-".into(), None);
     };
     let named = |v: &Value| -> Option<Value> {
