@@ -42,7 +42,9 @@ fn impulse(t: &[f64], y: &[f64], from: f64) -> f64 {
 }
 
 /// The 30 deg wedge of `common::sph` at 5 m/s, 20 particles per half-beam, three sensors at 35-55 % of
-/// the side, run to 1.2 times Wagner's chine wetting (past the force peak at the chine), force-panel.
+/// the side, run to 1.2 times Wagner's chine wetting (past the force peak at the chine), force-panel;
+/// with and without air in the same numerics (no shifting, the uncorrected divergence and an unweighted
+/// wall, which a run with air takes), so that the comparison measures the air alone.
 fn wedge30(air: AirChoice) -> sph::Setup {
     wedge_setup(
         30.0,
@@ -54,6 +56,9 @@ fn wedge30(air: AirChoice) -> sph::Setup {
             particles_per_half_beam: Some(20.0),
             sensor_method: Some(SensorMethod::ForcePanel),
             air: Some(air),
+            shifting: Some(false),
+            divergence_correction: Some(false),
+            wall_wetness: Some(false),
             ..Default::default()
         },
     )

@@ -222,12 +222,14 @@ fn the_corrected_divergence_removes_the_overshoot_at_40_deg() {
 }
 
 /// `--divergence-correction` on `entry wedge` turns the correction on and says so in the setup notes;
-/// without it the run is uncorrected (the default).
+/// without it the run is corrected too (the default), and `--divergence-correction=false` turns it off.
 #[test]
 fn the_command_line_switches_the_correction_on() {
     let dir = tempfile::tempdir().unwrap();
     let run = |extra: &[&str]| -> serde_json::Value {
-        let out = dir.path().join(format!("run{}", extra.len()));
+        let out = dir
+            .path()
+            .join(format!("run{}", extra.join("").replace('=', "_")));
         let mut args = vec![
             "entry",
             "wedge",
@@ -266,7 +268,9 @@ fn the_command_line_switches_the_correction_on() {
             .any(|n| n.as_str().unwrap().contains("kernel-gradient correction"))
     };
     assert!(noted(&on), "{on}");
-    let off = run(&[]);
+    // On by default in a single-phase run (the wall-resolved scheme), off when asked.
+    assert_eq!(run(&[])["divergence_correction"], true);
+    let off = run(&["--divergence-correction=false"]);
     assert_eq!(off["divergence_correction"], false);
     assert!(!noted(&off));
 }

@@ -208,6 +208,15 @@ fn air_statement(s: &RunSummary) -> Option<String> {
 /// `validate` uses it), so that the design rests on what is validated.
 pub const DESIGN_SENSOR_METHOD: sph::SensorMethod = sph::SensorMethod::ForcePanel;
 
+/// An option of the wall-resolved scheme as the settings record it: the value given, else the default
+/// ([`crate::sph::case::single_phase_default`]: on in single-phase runs, off in runs with air).
+fn scheme_setting(given: Option<bool>) -> serde_json::Value {
+    match given {
+        Some(b) => serde_json::json!(b),
+        None => serde_json::json!("default: on in single-phase runs, off in runs with air"),
+    }
+}
+
 /// The SPH setup of an event: the section, its v(t) and sensors, the automatic choices of the solver
 /// (resolution, tank, sound speed, end time) and the physical low-pass cut-off of its sensor records
 /// ([`cutoff::slamming_cutoff`]) unless the overrides give one.
@@ -614,18 +623,9 @@ pub fn run(
             Some(false) => "uniform",
             None => "default: refined (dp in a band around the body, 2 dp beyond)",
         },
-        "divergence_correction": s
-            .overrides
-            .divergence_correction
-            .unwrap_or(crate::sph::case::DEFAULT_DIVERGENCE_CORRECTION),
-        "shifting": s
-            .overrides
-            .shifting
-            .unwrap_or(crate::sph::case::DEFAULT_SHIFTING),
-        "wall_wetness": s
-            .overrides
-            .wall_wetness
-            .unwrap_or(crate::sph::case::DEFAULT_WALL_WETNESS),
+        "divergence_correction": scheme_setting(s.overrides.divergence_correction),
+        "shifting": scheme_setting(s.overrides.shifting),
+        "wall_wetness": scheme_setting(s.overrides.wall_wetness),
         "air": s.overrides.air.unwrap_or_default(),
         "sensor_method": s.overrides.sensor_method.unwrap_or(DESIGN_SENSOR_METHOD),
         "convergence_levels": s.study.levels,

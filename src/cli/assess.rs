@@ -76,8 +76,8 @@ pub struct AssessArgs {
     particles_per_half_beam: Option<f64>,
     #[command(flatten)]
     sph: SphOptions,
-    /// How the SPH sensor pressures are computed [default: force-panel, the design method; entry
-    /// defaults to interpolated].
+    /// How the SPH sensor pressures are computed [default: force-panel, the design method and the
+    /// method of the default scheme].
     #[arg(long, value_enum)]
     sensor_method: Option<SensorMethod>,
     /// Resolutions per SPH run including the reported one (1 = no convergence statement, 2 or 3).

@@ -106,7 +106,7 @@ pub struct Common {
     /// Cut-off (Hz) of the zero-phase low-pass filter for the reported filtered peaks [default: none].
     #[arg(long)]
     filter_hz: Option<f64>,
-    /// How the sensor pressures are computed [default: interpolated, or the case file's choice].
+    /// How the sensor pressures are computed [default: force-panel, or the case file's choice].
     #[arg(long, value_enum)]
     sensor_method: Option<SensorMethod>,
     /// Resolutions run for the convergence statement of every peak, the requested one included: 2 adds a

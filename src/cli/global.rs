@@ -195,24 +195,26 @@ pub struct SphOptions {
     pub refined_tank: bool,
     /// Kernel-gradient-corrected velocity divergence in the continuity equation (Bonet & Lok 1999):
     /// removes the spurious compression of free-surface particles ahead of the jet root and the void it
-    /// traps there; read the sensors with `--sensor-method force-panel` with it (the interpolated wall
-    /// pressure then reads the root peak low). Not the default yet (docs/guide/numerics.md).
-    #[arg(long)]
-    pub divergence_correction: bool,
+    /// traps there. Part of the default scheme of single-phase runs (with `--shifting` and
+    /// `--wall-wetness`); `--divergence-correction=false` turns it off. Read the sensors as force panels
+    /// with it (the default `--sensor-method`: the interpolated wall pressure reads the root peak low).
+    #[arg(long, value_name = "BOOL", num_args = 0..=1, require_equals = true, default_missing_value = "true")]
+    pub divergence_correction: Option<bool>,
     /// Particle shifting with free-surface treatment (the shifting of delta+-SPH, Sun et al. 2017), in the
-    /// uniform or the refined tank. With `--divergence-correction` and force-panel sensors this is the
-    /// combination whose wedge sensor peaks converge to the similarity solution at the fine resolution
-    /// (30 deg at 160 particles per half-beam: every sensor within 6 %, the section force within 1.4 %;
-    /// docs/numerics/wedge-convergence.md). At the default resolution it reads high; not the default.
-    #[arg(long)]
-    pub shifting: bool,
+    /// uniform or the refined tank. Part of the default scheme of single-phase runs; `--shifting=false`
+    /// turns it off. With the corrected divergence, the wall's wetness and force-panel sensors, the sensor
+    /// peaks of the 20, 30 and 45 deg wedges fall toward the similarity solution with refinement
+    /// (docs/numerics/wedge-convergence.md, items 29 and 33).
+    #[arg(long, value_name = "BOOL", num_args = 0..=1, require_equals = true, default_missing_value = "true")]
+    pub shifting: Option<bool>,
     /// Body dummies weighted by the wetness of the body's face: a dummy beside a spray root that water has
-    /// only begun to reach counts only as far as the water fills the space outside the wall there. With
-    /// `--shifting`, `--divergence-correction` and force-panel sensors, every sensor of the 20, 30 and 45 deg
-    /// wedges reads within 10 % of the exact solution at 80 particles per half-beam; the section force then
-    /// reads 4-5 % low (docs/numerics/wedge-convergence.md, item 29). Not the default.
-    #[arg(long)]
-    pub wall_wetness: bool,
+    /// only begun to reach counts only as far as the water fills the space outside the wall there. Part of
+    /// the default scheme of single-phase runs; `--wall-wetness=false` turns it off. With it every sensor of
+    /// the 20, 30 and 45 deg wedges reads within 10 % of the exact solution at 80 particles per half-beam,
+    /// and the section force 4-5 % low (docs/numerics/wedge-convergence.md, item 29). A run with air takes
+    /// none of the three.
+    #[arg(long, value_name = "BOOL", num_args = 0..=1, require_equals = true, default_missing_value = "true")]
+    pub wall_wetness: Option<bool>,
     /// Air as a second phase (two-phase SPH, for the air cushion of flat and low-deadrise sections):
     /// off, on, or auto (on where the deadrise within the expected wetted half-width is below 15 deg;
     /// docs/guide/air.md).
@@ -231,16 +233,16 @@ impl SphOptions {
 
     /// The `divergence_correction` override: None (the library's default) unless the flag is given.
     pub fn divergence_correction(&self) -> Option<bool> {
-        self.divergence_correction.then_some(true)
+        self.divergence_correction
     }
 
     /// The `shifting` override: None (the library's default) unless the flag is given.
     pub fn shifting(&self) -> Option<bool> {
-        self.shifting.then_some(true)
+        self.shifting
     }
 
     /// The `wall_wetness` override: None (the library's default) unless the flag is given.
     pub fn wall_wetness(&self) -> Option<bool> {
-        self.wall_wetness.then_some(true)
+        self.wall_wetness
     }
 }

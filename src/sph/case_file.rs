@@ -434,21 +434,22 @@ mod tests {
         assert!(s.riemann == DEFAULT_RIEMANN && s.shifting == DEFAULT_SHIFTING);
         assert_eq!(s.wall_wetness, DEFAULT_WALL_WETNESS);
         assert_eq!(s.force, ForceMethod::NormalPairForces);
+        assert!(s.shifting && s.divergence_correction && s.wall_wetness);
         let s = parse(&format!(
-            "{base}[numerics]\nriemann = false\nshifting = true\nforce = \"contour\"\nwall_wetness = true\n"
+            "{base}[numerics]\nriemann = false\nshifting = false\nforce = \"contour\"\nwall_wetness = false\n"
         ))
         .unwrap();
-        assert!(!s.riemann && s.shifting && s.force == ForceMethod::Contour && s.wall_wetness);
+        assert!(!s.riemann && !s.shifting && s.force == ForceMethod::Contour && !s.wall_wetness);
         let s = parse(&format!("{base}[numerics]\nforce = \"pair_forces\"\n")).unwrap();
         assert_eq!(s.force, ForceMethod::PairForces);
         let e = parse(&format!("{base}[numerics]\nforce = \"pressure\"\n")).unwrap_err();
         assert!(e.to_string().starts_with("case.toml:7:9:"), "{e}");
-        assert_eq!(s.sensor_method, SensorMethod::Interpolated);
+        assert_eq!(s.sensor_method, SensorMethod::ForcePanel);
         let s = parse(&format!(
-            "{base}[numerics]\nsensor_method = \"force_panel\"\n"
+            "{base}[numerics]\nsensor_method = \"interpolated\"\n"
         ))
         .unwrap();
-        assert_eq!(s.sensor_method, SensorMethod::ForcePanel);
+        assert_eq!(s.sensor_method, SensorMethod::Interpolated);
         let e = parse(&format!("{base}[numerics]\nsensor_method = \"panel\"\n")).unwrap_err();
         assert!(e.to_string().starts_with("case.toml:7:17:"), "{e}");
     }

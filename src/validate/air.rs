@@ -30,7 +30,9 @@ fn raw_peak(x: &[f64]) -> f64 {
 
 /// A run of `section` at constant `speed` to `t_end` (s after the keel reaches the calm surface), with
 /// `n` particles over the half-beam, force-panel `sensors`, air on or off, the water's sound speed `c0`
-/// (None: the automatic one).
+/// (None: the automatic one). Both runs take the standard continuity equation and wall, without shifting
+/// or the wall's wetness: a run with air cannot take the single-phase default scheme, and a comparison
+/// with and without air measures the air only when the numerics are otherwise the same.
 #[allow(clippy::too_many_arguments)]
 fn entry(
     memo: &Memo,
@@ -58,6 +60,9 @@ fn entry(
                     air: Some(if air { AirChoice::On } else { AirChoice::Off }),
                     c0,
                     sensor_method: Some(SensorMethod::ForcePanel),
+                    shifting: Some(false),
+                    divergence_correction: Some(false),
+                    wall_wetness: Some(false),
                     ..Default::default()
                 },
             )?;
