@@ -40,8 +40,10 @@
 //! (see the module documentation of `kernel_correction`). With the correction the root pressure no longer
 //! collapses at 40 and 80 particles and the peak times come closer (at 160 they are late again); the peak
 //! values at 80 particles are 10-20 % low at both angles (the non-convergence measured above; issue #9
-//! item 5). The correction is not the default: the default interpolated sensors read the root peak 25 %
-//! low with it (see `slamtool::sph::kernel_correction`).
+//! item 5). The interpolated sensors read the root peak 25 % low with it (see
+//! `slamtool::sph::kernel_correction`). These runs measure the correction on its own, in the plain scheme
+//! (no shifting, an unweighted wall: `common::sph::wedge_run_numerics`); since 2026-12-01 the default
+//! scheme has the correction with both (docs/numerics/wedge-convergence.md, item 33).
 
 mod common;
 

@@ -18,15 +18,18 @@ use common::sph::{ZHAO_VELOCITY, force_difference, quiet, zhao_wedge};
 use slamtool::sph::{self, MotionSpec, Overrides, Setup};
 
 /// The Zhao case at 20 particles per half-beam (prescribed velocity, to 25 ms) in a uniform and in a
-/// refined tank with the same sound speed, `shifting` as given.
-fn zhao_uniform_and_refined(shifting: Option<bool>) -> (Setup, Setup) {
+/// refined tank with the same sound speed: in the plain scheme (no shifting, the uncorrected divergence, an
+/// unweighted wall) when `plain`, else in the default one.
+fn zhao_uniform_and_refined(plain: bool) -> (Setup, Setup) {
     let table = ZHAO_VELOCITY.iter().map(|r| [r[0] * 1e-3, r[1]]).collect();
     let motion = MotionSpec::Prescribed { table };
     let o = Overrides {
         particles_per_half_beam: Some(20.0),
         t_end: Some(0.025),
         refinement: Some(false),
-        shifting,
+        shifting: plain.then_some(false),
+        divergence_correction: plain.then_some(false),
+        wall_wetness: plain.then_some(false),
         ..Default::default()
     };
     let uniform = sph::case::resolve("uniform", &zhao_wedge(), &motion, Vec::new(), &o).unwrap();
@@ -45,9 +48,14 @@ fn zhao_uniform_and_refined(shifting: Option<bool>) -> (Setup, Setup) {
     (uniform, refined)
 }
 
+/// The refined tank against the uniform one in the plain scheme, where the whole history is steady enough
+/// to compare: the force within 2 % of its peak throughout, the peak within 2 %. (The default scheme,
+/// with shifting, is compared up to the peak in the next test: after the peak a run with shifting is
+/// sensitive to any change, and the default scheme's refined run differs from its uniform one by 3.5 % of
+/// the peak over the whole history, measured 2026-12-01.)
 #[test]
 fn zhao_force_in_the_refined_tank_matches_the_uniform_one() {
-    let (uniform, refined) = zhao_uniform_and_refined(None);
+    let (uniform, refined) = zhao_uniform_and_refined(true);
     assert!(refined.refinement.is_some());
     assert_eq!(refined.dp, uniform.dp);
     let a = sph::run(uniform, &quiet()).unwrap();
@@ -89,14 +97,15 @@ fn a_refined_tank_needs_the_riemann_scheme() {
 
 /// Particle shifting in the refined tank (each pair with its own kernel, each particle with its own
 /// spacing, `sph::shifting`) against shifting in the uniform tank: the Zhao case at 20 particles per
-/// half-beam. Up to the peak the criterion of the tank without shifting holds (the force within 2 % of
+/// half-beam, in the default scheme (shifting with the corrected divergence and the wall's wetness since
+/// 2026-12-01; the figures below were measured with shifting alone). Up to the peak the criterion of the tank without shifting holds (the force within 2 % of
 /// its peak, the peak within 2 %). After the peak, when the flow separates at the knuckles, a run with
 /// shifting is sensitive to any change: a uniform run with c0 1 % higher differs from the uniform one
 /// by 8.4 % of the peak, and the refined one by 10.0 % (measured 2026-11-27). The refined tank may change
 /// the whole history by no more than 1.5 times what that 1 % change of the sound speed does.
 #[test]
 fn shifting_in_the_refined_tank_matches_the_uniform_one() {
-    let (uniform, refined) = zhao_uniform_and_refined(Some(true));
+    let (uniform, refined) = zhao_uniform_and_refined(false);
     assert!(refined.refinement.is_some() && refined.shifting);
     let mut faster = uniform.clone();
     faster.c0 *= 1.01;

@@ -61,18 +61,21 @@ pub fn wedge_run(
     t_frac: f64,
     method: SensorMethod,
 ) -> WedgeRun {
-    wedge_run_numerics(
+    wedge_run_with(
         deadrise_deg,
         speed,
-        n_half,
         sensors,
         t_frac,
-        method,
-        sph::case::DEFAULT_DIVERGENCE_CORRECTION,
+        Overrides {
+            particles_per_half_beam: Some(n_half),
+            sensor_method: Some(method),
+            ..Default::default()
+        },
     )
 }
 
-/// [`wedge_run`] with the kernel-gradient-corrected divergence on or off.
+/// [`wedge_run`] in the plain scheme (no shifting, an unweighted wall) with the kernel-gradient-corrected
+/// divergence on or off: the scheme in which the correction was measured on its own.
 pub fn wedge_run_numerics(
     deadrise_deg: f64,
     speed: f64,
@@ -82,18 +85,36 @@ pub fn wedge_run_numerics(
     method: SensorMethod,
     divergence_correction: bool,
 ) -> WedgeRun {
+    wedge_run_with(
+        deadrise_deg,
+        speed,
+        sensors,
+        t_frac,
+        Overrides {
+            particles_per_half_beam: Some(n_half),
+            sensor_method: Some(method),
+            divergence_correction: Some(divergence_correction),
+            shifting: Some(false),
+            wall_wetness: Some(false),
+            ..Default::default()
+        },
+    )
+}
+
+fn wedge_run_with(
+    deadrise_deg: f64,
+    speed: f64,
+    sensors: usize,
+    t_frac: f64,
+    overrides: Overrides,
+) -> WedgeRun {
     let setup = wedge_setup(
         deadrise_deg,
         speed,
         sensors,
         [0.15, 0.60],
         t_frac,
-        Overrides {
-            particles_per_half_beam: Some(n_half),
-            sensor_method: Some(method),
-            divergence_correction: Some(divergence_correction),
-            ..Default::default()
-        },
+        overrides,
     );
     WedgeRun {
         beta: deadrise_deg.to_radians(),
