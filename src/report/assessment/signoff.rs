@@ -313,8 +313,9 @@ pub fn page(r: &mut Report, saved: &Saved) {
          contact transient), not assessed (one level, \
          or no SPH impact). A verdict measures how much the peak moves between the run's spacings, not \
          its error against an exact solution: on the validation's constant-speed wedges the default \
-         level's force-panel peaks read 0.86-1.38 of the exact similarity pressure (validation case \
-         wedge-convergence-table, a known failure; docs/numerics/wedge-convergence.md). On a panel of {:.1} deg local deadrise or more the similarity solution's \
+         level's force-panel peaks (the default scheme, sensors below 80 % of the side) read 0.98-1.16 of \
+         the exact similarity pressure at 20, 30 and 45 deg (validation case wedge-convergence-table, a \
+         known failure; docs/numerics/wedge-convergence.md, item 33). On a panel of {:.1} deg local deadrise or more the similarity solution's \
          pressure maximum is at the keel and no impact pulse crosses the panel: its levels are compared \
          by value, whatever their times. A panel with no design value (\"-\") is one no model here computes. \
          Analytic: the modified Logvinovich model (MLM) for pressures and forces, each corrected to the \
@@ -484,7 +485,8 @@ pub fn page(r: &mut Report, saved: &Saved) {
         caption: "Section force per metre (N/m): design value, SPH slamming peak ± U, analytic (corrected MLM; \
                   flat-plate Wagner after a flat keel's start), buoyancy at the SPH peak (the hydrostatic part), source and verdict. \
                   U covers the spacing only: at the automatic sound speed the SPH section force of a wedge reads \
-                  7-9 % below its value as c0 grows (docs/numerics/wedge-convergence.md, item 10), and a flat \
+                  3.5-6 % below the exact similarity force, and within 1 % of it at twice that sound speed \
+                  (the default scheme; docs/numerics/wedge-convergence.md, item 31), and a flat \
                   keel's acoustic impact is not in these forces (see the flags)"
             .into(),
         header: [

@@ -429,8 +429,9 @@ pub fn appendix(r: &mut Report, saved: &Saved) {
             "Sound speed: the automatic c0 keeps the density change to 1 % at Wagner's peak pressure, which \
              puts Wagner's wetted contact at Mach 0.14, (pi/2) V cot(beta) / c0, wherever that bound sets c0 \
              (each run's summary.json states its own Mach number). On constant-speed wedges of 20-45 deg at \
-             Mach 0.14 the SPH section force read 7-9 % below its value as c0 grows, a compressibility \
-             error of first order in 1/c0 (docs/numerics/wedge-convergence.md, item 10). The section forces \
+             Mach 0.14 the SPH section force reads 3.5-6 % below the exact similarity force with the default \
+             scheme and within 1 % of it at twice the sound speed, a compressibility error of first order in \
+             1/c0 (docs/numerics/wedge-convergence.md, items 10 and 31). The section forces \
              of this report carry that bias; their convergence verdicts, made in the particle spacing at a \
              fixed c0, do not measure it.",
         );
