@@ -103,13 +103,16 @@ fn setup(a: &BenchArgs) -> slamtool::Result<Setup> {
     )
 }
 
-/// The numerical scheme the benchmark runs, in words.
-fn scheme(a: &BenchArgs) -> &'static str {
-    if a.plain || a.air {
-        "plain (no shifting, uncorrected divergence, unweighted wall)"
-    } else {
-        "default (shifting, corrected divergence, wall wetness)"
-    }
+/// The numerical scheme a resolved benchmark case runs, in words (read from its setup, which applies the
+/// defaults, `--plain` and the rule for runs with air).
+fn scheme(s: &Setup) -> String {
+    let on = |b: bool| if b { "on" } else { "off" };
+    format!(
+        "shifting {}, corrected divergence {}, wall wetness {}",
+        on(s.shifting),
+        on(s.divergence_correction),
+        on(s.wall_wetness)
+    )
 }
 
 /// Build the case and time `steps` steps on the current thread pool.
@@ -171,12 +174,14 @@ pub fn run(a: BenchArgs) -> slamtool::Result<()> {
         vec![available]
     };
     let mut runs = Vec::new();
+    let mut scheme_text = String::new();
     for &n in &counts {
         global::note(&format!(
             "timing {} steps of a 30 deg wedge at 5 m/s ({tank} tank) on {n} thread(s)",
             a.steps
         ));
         let s = setup(&a)?;
+        scheme_text = scheme(&s);
         let t = if a.threads_scan {
             let pool = rayon::ThreadPoolBuilder::new()
                 .num_threads(n)
@@ -210,7 +215,7 @@ pub fn run(a: BenchArgs) -> slamtool::Result<()> {
         "outputs": null,
         "case": "30 deg wedge, 5 m/s, half tank 4b x 3b, b = 0.25 m",
         "air": a.air,
-        "scheme": scheme(&a),
+        "scheme": scheme_text,
         "tank": tank,
         "steps": a.steps,
         "fluid_particles": last.n_fluid,
@@ -234,7 +239,7 @@ pub fn run(a: BenchArgs) -> slamtool::Result<()> {
         if a.air { ", with air" } else { "" },
         a.steps
     );
-    println!("scheme                    {}", scheme(&a));
+    println!("scheme                    {scheme_text}");
     println!(
         "particles                 {} fluid{}, {} with wall and body dummies",
         last.n_fluid,
